@@ -1,0 +1,97 @@
+/*---------------------------------------------------------------------------*\
+  rarefiedMultiphaseFoam
+
+Application
+    rarefiedMultiphaseFoam
+
+Group
+    grpDiscreteMethodsSolvers
+
+Description
+    Transient solver for rarefied gas flows (DSMC) carrying solid grains
+    (Lagrangian parcels).  Each phase exists only when its dictionary does:
+    constant/dsmcProperties for the gas.  A dsmcFoam case runs unchanged and,
+    with the default randomSeed, reproduces dsmcFoam.
+
+    One step of length deltaT (SPEC.md section 1), and where each part lives:
+
+      1. gas inflow               gasCloud::evolve (InflowBoundaryModel)
+      2. gas move                 gasCloud::evolve; per simulator
+                                  gasParcel::afterMove is the hook for the
+                                  axisymmetric rotation into the meridional
+                                  plane; radial-weight cloning/deletion is a
+                                  pass over the cloud after the move
+      3. gas-gas collisions       gasCloud::evolve (NTC, BinaryCollisionModel),
+                                  then the instantaneous gas fields are sampled
+      4. solid evolve             hook "solid phase" below: interphase force
+                                  and heat from the molecules now in each
+                                  cell, solid-solid model, parcel move
+      5. two-way gas update       hook "two-way" below: molecules that
+                                  collided with grains take their
+                                  post-collision states
+      6. sampling and writing     function objects (fieldAverage, dsmcFields)
+                                  and runTime.write()
+
+    The progress line after each step gives the simulated time, the wall
+    time used and an estimate of the wall time left.
+
+\*---------------------------------------------------------------------------*/
+
+#include "fvCFD.H"
+#include "gasCloud.H"
+#include "progressReport.H"
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+int main(int argc, char *argv[])
+{
+    argList::addNote
+    (
+        "Transient solver for rarefied gas (DSMC) and solid grain flows"
+    );
+
+    #define NO_CONTROL
+    #include "postProcess.H"
+
+    #include "addCheckCaseOptions.H"
+    #include "setRootCaseLists.H"
+    #include "createTime.H"
+    #include "createMesh.H"
+    #include "createFields.H"
+
+    progressReport progress(runTime);
+
+    Info<< "\nStarting time loop\n" << endl;
+
+    while (runTime.loop())
+    {
+        Info<< "Time = " << runTime.timeName() << nl << endl;
+
+        // Steps 1-3: gas inflow, move, collisions
+        if (gas.valid())
+        {
+            gas->evolve();
+        }
+
+        // Step 4, solid phase: no solid phase yet
+
+        // Step 5, two-way: no interphase coupling yet
+
+        if (gas.valid())
+        {
+            gas->info();
+        }
+
+        // Step 6
+        runTime.write();
+
+        progress.report();
+    }
+
+    Info<< "End\n" << endl;
+
+    return 0;
+}
+
+
+// ************************************************************************* //

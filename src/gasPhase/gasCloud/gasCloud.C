@@ -1,0 +1,287 @@
+/*---------------------------------------------------------------------------*\
+  rarefiedMultiphaseFoam
+\*---------------------------------------------------------------------------*/
+
+#include "gasCloud.H"
+#include "inputChecks.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    defineTypeNameAndDebug(gasCloud, 0);
+}
+
+
+// * * * * * * * * * * * * * * * Input checks  * * * * * * * * * * * * * * * //
+
+namespace
+{
+
+Foam::IOdictionary readProperties
+(
+    const Foam::word& cloudName,
+    const Foam::fvMesh& mesh
+)
+{
+    using namespace Foam;
+
+    return IOdictionary
+    (
+        IOobject
+        (
+            cloudName + "Properties",
+            mesh.time().constant(),
+            mesh,
+            IOobject::MUST_READ,
+            IOobject::NO_WRITE,
+            false
+        )
+    );
+}
+
+} // End anonymous namespace
+
+
+Foam::wordList Foam::gasCloudInputCheck::checkProperties
+(
+    const dictionary& dict
+)
+{
+    using namespace inputChecks;
+
+    getPositive(dict, "nEquivalentParticles");
+    getLabelOrDefault(dict, "randomSeed", 0, 0, 2000);
+
+    const wordList species(dict.get<wordList>("typeIdList"));
+    if (species.empty())
+    {
+        outOfRange(dict, "typeIdList", species, "a list of one or more species");
+    }
+
+    const dictionary& molecules = dict.subDict("moleculeProperties");
+    for (const word& name : species)
+    {
+        const dictionary& props = molecules.subDict(name);
+        getPositive(props, "mass");
+        getPositive(props, "diameter");
+        getClosed(props, "internalDegreesOfFreedom", 0, 10);
+        getClosed(props, "omega", 0.5, 1.0);
+    }
+
+    const word collision(dict.get<word>("BinaryCollisionModel"));
+    if (collision == "VariableHardSphere")
+    {
+        getPositive(dict.subDict(collision + "Coeffs"), "Tref");
+    }
+    else if (collision == "LarsenBorgnakkeVariableHardSphere")
+    {
+        const dictionary& coeffs = dict.subDict(collision + "Coeffs");
+        getPositive(coeffs, "Tref");
+        getClosed(coeffs, "relaxationCollisionNumber", 1, GREAT);
+    }
+
+    if (dict.get<word>("WallInteractionModel") == "MixedDiffuseSpecular")
+    {
+        getClosed
+        (
+            dict.subDict("MixedDiffuseSpecularCoeffs"), "diffuseFraction", 0, 1
+        );
+    }
+
+    if (dict.get<word>("InflowBoundaryModel") == "FreeStream")
+    {
+        const dictionary& densities =
+            dict.subDict("FreeStreamCoeffs").subDict("numberDensities");
+        for (const word& name : densities.toc())
+        {
+            if (!species.found(name))
+            {
+                notOneOf(densities, "numberDensities", name, species);
+            }
+            getNonNegative(densities, name);
+        }
+    }
+
+    return species;
+}
+
+
+void Foam::gasCloudInputCheck::checkInitialise
+(
+    const dictionary& dict,
+    const wordList& species
+)
+{
+    using namespace inputChecks;
+
+    getPositive(dict, "temperature");
+    dict.get<vector>("velocity");
+
+    const dictionary& densities = dict.subDict("numberDensities");
+    for (const word& name : densities.toc())
+    {
+        if (!species.found(name))
+        {
+            notOneOf(densities, "numberDensities", name, species);
+        }
+        getNonNegative(densities, name);
+    }
+}
+
+
+Foam::gasCloudInputCheck::gasCloudInputCheck
+(
+    const word& cloudName,
+    const fvMesh& mesh
+)
+{
+    checkProperties(readProperties(cloudName, mesh));
+}
+
+
+Foam::gasCloudInputCheck::gasCloudInputCheck
+(
+    const word& cloudName,
+    const fvMesh& mesh,
+    const dictionary& initialiseDict
+)
+{
+    checkInitialise
+    (
+        initialiseDict,
+        checkProperties(readProperties(cloudName, mesh))
+    );
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::gasCloud::seedFromCase()
+{
+    // Without the keyword the stream is upstream's, untouched
+    label seed = 0;
+    if (particleProperties().readIfPresent("randomSeed", seed))
+    {
+        rndGen().reset(seed*1000003 + Pstream::myProcNo());
+
+        Info<< "Gas random seed " << seed << " (+ processor number)" << endl;
+    }
+}
+
+
+void Foam::gasCloud::accountStep(const label nBefore)
+{
+    // Counters as scalars: totals of long runs exceed 32-bit labels
+    scalarField escaped(nEscapedStep_.size());
+    forAll(escaped, patchi)
+    {
+        escaped[patchi] = nEscapedStep_[patchi];
+    }
+
+    scalar lost = nLostStep_;
+    scalar present = this->size();
+    scalar change = present - nBefore;
+
+    Pstream::listCombineGather(escaped, plusEqOp<scalar>());
+    Pstream::listCombineScatter(escaped);
+    reduce(lost, sumOp<scalar>());
+    reduce(present, sumOp<scalar>());
+    reduce(change, sumOp<scalar>());
+
+    nRemovedLast_ = sum(escaped) + lost;
+    nInflowLast_ = change + nRemovedLast_;
+    nPresent_ = present;
+
+    nEscapedTotal_ += escaped;
+    nLostTotal_ += lost;
+    nInflowTotal_ += nInflowLast_;
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::gasCloud::gasCloud(const word& cloudName, const fvMesh& mesh)
+:
+    gasCloudInputCheck(cloudName, mesh),
+    DSMCCloud<gasParcel>(cloudName, mesh, true),
+    nEscapedStep_(mesh.boundaryMesh().size(), Zero),
+    nLostStep_(0),
+    nEscapedTotal_(mesh.boundaryMesh().size(), Zero),
+    nLostTotal_(0),
+    nInflowTotal_(0),
+    nInflowLast_(0),
+    nRemovedLast_(0),
+    nPresent_(returnReduce(this->size(), sumOp<label>()))
+{
+    seedFromCase();
+}
+
+
+Foam::gasCloud::gasCloud
+(
+    const word& cloudName,
+    const fvMesh& mesh,
+    const IOdictionary& initialiseDict
+)
+:
+    gasCloudInputCheck(cloudName, mesh, initialiseDict),
+    DSMCCloud<gasParcel>(cloudName, mesh, initialiseDict),
+    nEscapedStep_(mesh.boundaryMesh().size(), Zero),
+    nLostStep_(0),
+    nEscapedTotal_(mesh.boundaryMesh().size(), Zero),
+    nLostTotal_(0),
+    nInflowTotal_(0),
+    nInflowLast_(0),
+    nRemovedLast_(0),
+    nPresent_(returnReduce(this->size(), sumOp<label>()))
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::gasCloud::evolve()
+{
+    const label nBefore = this->size();
+
+    nEscapedStep_ = Zero;
+    nLostStep_ = 0;
+
+    DSMCCloud<gasParcel>::evolve();
+
+    accountStep(nBefore);
+}
+
+
+void Foam::gasCloud::info() const
+{
+    DSMCCloud<gasParcel>::info();
+
+    const polyBoundaryMesh& patches = mesh().boundaryMesh();
+
+    Info<< "    Simulators present              = " << nPresent_ << nl
+        << "    Simulators in / out this step   = "
+        << nInflowLast_ << " / " << nRemovedLast_ << nl
+        << "    Simulators in / out since start = "
+        << nInflowTotal_ << " / " << sum(nEscapedTotal_) + nLostTotal_
+        << nl;
+
+    forAll(nEscapedTotal_, patchi)
+    {
+        if (nEscapedTotal_[patchi] > 0)
+        {
+            Info<< "        out through " << patches[patchi].name()
+                << " = " << nEscapedTotal_[patchi] << nl;
+        }
+    }
+
+    if (nLostTotal_ > 0)
+    {
+        Info<< "        lost away from patches = " << nLostTotal_ << nl;
+    }
+
+    Info<< endl;
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,49 @@
+/*---------------------------------------------------------------------------*\
+  rarefiedMultiphaseFoam
+
+Description
+    Registers upstream's DSMC submodels (binary collision, wall interaction,
+    inflow boundary) in the selection tables of DSMCCloud<gasParcel>.
+
+\*---------------------------------------------------------------------------*/
+
+#include "gasCloud.H"
+
+#include "NoBinaryCollision.H"
+#include "VariableHardSphere.H"
+#include "LarsenBorgnakkeVariableHardSphere.H"
+
+#include "MaxwellianThermal.H"
+#include "SpecularReflection.H"
+#include "MixedDiffuseSpecular.H"
+
+#include "NoInflow.H"
+#include "FreeStream.H"
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    typedef DSMCCloud<gasParcel> gasCloudBase;
+
+    makeBinaryCollisionModel(gasCloudBase);
+    makeBinaryCollisionModelType(NoBinaryCollision, gasCloudBase);
+    makeBinaryCollisionModelType(VariableHardSphere, gasCloudBase);
+    makeBinaryCollisionModelType
+    (
+        LarsenBorgnakkeVariableHardSphere,
+        gasCloudBase
+    );
+
+    makeWallInteractionModel(gasCloudBase);
+    makeWallInteractionModelType(MaxwellianThermal, gasCloudBase);
+    makeWallInteractionModelType(SpecularReflection, gasCloudBase);
+    makeWallInteractionModelType(MixedDiffuseSpecular, gasCloudBase);
+
+    makeInflowBoundaryModel(gasCloudBase);
+    makeInflowBoundaryModelType(NoInflow, gasCloudBase);
+    makeInflowBoundaryModelType(FreeStream, gasCloudBase);
+}
+
+
+// ************************************************************************* //
