@@ -4,6 +4,7 @@
 
 #include "gasCloud.H"
 #include "inputChecks.H"
+#include "polyMeshTetDecomposition.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -115,10 +116,15 @@ void Foam::gasCloudInputCheck::checkInitialise
 {
     using namespace inputChecks;
 
+    getLabelOrDefault(dict, "randomSeed", 0, 0, 2000);
     getPositive(dict, "temperature");
     dict.get<vector>("velocity");
 
     const dictionary& densities = dict.subDict("numberDensities");
+    if (densities.empty())
+    {
+        outOfRange(dict, "numberDensities", "{}", "one entry per species");
+    }
     for (const word& name : densities.toc())
     {
         if (!species.found(name))
@@ -199,6 +205,97 @@ void Foam::gasCloud::accountStep(const label nBefore)
 }
 
 
+Foam::IOdictionary Foam::gasCloud::emptied(const IOdictionary& initialiseDict)
+{
+    IOobject io(initialiseDict);
+    io.readOpt() = IOobject::NO_READ;
+    io.registerObject() = false;
+
+    IOdictionary dict(io, initialiseDict);
+
+    dictionary& densities = dict.subDict("numberDensities");
+    for (const word& name : densities.toc())
+    {
+        densities.set(name, scalar(0));
+    }
+
+    return dict;
+}
+
+
+void Foam::gasCloud::fill(const dictionary& initialiseDict)
+{
+    const label seed =
+        initialiseDict.getOrDefault<label>("randomSeed", 0);
+    rndGen().reset(seed*1000003 + 500001 + Pstream::myProcNo());
+
+    const scalar T = initialiseDict.get<scalar>("temperature");
+    const vector U = initialiseDict.get<vector>("velocity");
+    const dictionary& densities = initialiseDict.subDict("numberDensities");
+
+    // Simulators per unit volume of each species (zero if not listed)
+    scalarList nSim(typeIdList().size(), Zero);
+    forAll(nSim, typeId)
+    {
+        nSim[typeId] =
+            densities.getOrDefault<scalar>(typeIdList()[typeId], 0)
+           /nParticle();
+    }
+
+    const fvMesh& mesh = this->mesh();
+
+    forAll(mesh.cells(), celli)
+    {
+        for
+        (
+            const tetIndices& tetIs
+          : polyMeshTetDecomposition::cellTetIndices(mesh, celli)
+        )
+        {
+            const tetPointRef tet = tetIs.tet(mesh);
+            const scalar volume = tet.mag();
+
+            forAll(nSim, typeId)
+            {
+                if (nSim[typeId] <= 0)
+                {
+                    continue;
+                }
+
+                const scalar expected = nSim[typeId]*volume;
+                label n = label(expected);
+                if (expected - n > rndGen().sample01<scalar>())
+                {
+                    ++n;
+                }
+
+                const auto& props = constProps(typeId);
+
+                for (label i = 0; i < n; ++i)
+                {
+                    const point position = tet.randomPoint(rndGen());
+                    const vector Ui =
+                        U + equipartitionLinearVelocity(T, props.mass());
+                    const scalar Ei = equipartitionInternalEnergy
+                    (
+                        T,
+                        props.internalDegreesOfFreedom()
+                    );
+
+                    addNewParcel(position, celli, Ui, Ei, typeId);
+                }
+            }
+        }
+    }
+
+    // Largest sigmaT*cR to start NTC selection from (Bird 1994, p. 222)
+    const auto& major = constProps(findMax(nSim));
+    sigmaTcRMax().primitiveFieldRef() =
+        major.sigmaT()*maxwellianMostProbableSpeed(T, major.mass());
+    sigmaTcRMax().correctBoundaryConditions();
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::gasCloud::gasCloud(const word& cloudName, const fvMesh& mesh)
@@ -226,7 +323,7 @@ Foam::gasCloud::gasCloud
 )
 :
     gasCloudInputCheck(cloudName, mesh, initialiseDict),
-    DSMCCloud<gasParcel>(cloudName, mesh, initialiseDict),
+    DSMCCloud<gasParcel>(cloudName, mesh, emptied(initialiseDict)),
     nEscapedStep_(mesh.boundaryMesh().size(), Zero),
     nLostStep_(0),
     nEscapedTotal_(mesh.boundaryMesh().size(), Zero),
@@ -234,8 +331,11 @@ Foam::gasCloud::gasCloud
     nInflowTotal_(0),
     nInflowLast_(0),
     nRemovedLast_(0),
-    nPresent_(returnReduce(this->size(), sumOp<label>()))
-{}
+    nPresent_(0)
+{
+    fill(initialiseDict);
+    nPresent_ = returnReduce(this->size(), sumOp<label>());
+}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //

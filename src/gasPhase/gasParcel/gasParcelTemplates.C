@@ -72,12 +72,12 @@ void Foam::gasParcel::hitWallPatch(TrackCloudType& cloud, trackingData&)
     sampleOnWall();
 
     // Energy and momentum given to the wall per unit time and area
-    const scalar perTimeArea =
-        cloud.nParticle()/(cloud.pMesh().time().deltaTValue()*area);
+    const scalar dtArea = cloud.pMesh().time().deltaTValue()*area;
 
     cloud.qBF()[patchi][facei] +=
-        perTimeArea*(energyIn - (0.5*m*magSqr(U_) + Ei_));
-    cloud.fDBF()[patchi][facei] += perTimeArea*(momentumIn - m*U_);
+        cloud.nParticle()*(energyIn - (0.5*m*magSqr(U_) + Ei_))/dtArea;
+    cloud.fDBF()[patchi][facei] +=
+        cloud.nParticle()*(momentumIn - m*U_)/dtArea;
 }
 
 

@@ -1,0 +1,1 @@
+"""rarefiedMultiphaseFoam post-processing and test helpers (run on /usr/bin/python3)."""

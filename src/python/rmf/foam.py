@@ -1,0 +1,143 @@
+"""Reading OpenFOAM ASCII fields and running OpenFOAM applications on a case.
+
+Only what the project's tests, benchmarks and plots need: internal fields
+of volScalarField / volVectorField files written in ASCII, cell centres
+(from `postProcess -func writeCellCentres`), and running an application
+with its output in log.<application> (as RunFunctions does).
+"""
+
+import os
+import re
+import shutil
+import subprocess
+
+import numpy as np
+
+PROJECT_DIR = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", "..", ".."))
+
+_NONUNIFORM = re.compile(rb"internalField\s+nonuniform\s+List<(\w+)>\s*(\d+)\s*\(")
+_UNIFORM = re.compile(rb"internalField\s+uniform\s+([^;]+);")
+
+
+def n_cells(case):
+    """Number of cells of the case's mesh (from the owner file's note)."""
+    with open(os.path.join(case, "constant", "polyMesh", "owner"), "rb") as f:
+        head = f.read(4096)
+    m = re.search(rb"nCells:\s*(\d+)", head)
+    if not m:
+        raise ValueError(f"{case}: no nCells note in constant/polyMesh/owner")
+    return int(m.group(1))
+
+
+def read_field(path, ncells=None):
+    """Internal field of an ASCII vol field file: shape (n,) or (n, 3).
+
+    A uniform field needs ncells to be expanded.
+    """
+    with open(path, "rb") as f:
+        text = f.read()
+    m = _NONUNIFORM.search(text)
+    if m:
+        kind, n = m.group(1), int(m.group(2))
+        start = m.end()
+        end = text.index(b"\n)", start)
+        body = text[start:end]
+        if kind == b"scalar":
+            values = np.array(body.split(), dtype=float)
+        elif kind == b"vector":
+            values = np.array(body.replace(b"(", b" ").replace(b")", b" ").split(),
+                              dtype=float).reshape(-1, 3)
+        else:
+            raise ValueError(f"{path}: unsupported List<{kind.decode()}>")
+        if len(values) != n:
+            raise ValueError(f"{path}: expected {n} values, read {len(values)}")
+        return values
+    m = _UNIFORM.search(text)
+    if m:
+        if ncells is None:
+            raise ValueError(f"{path}: uniform field, number of cells needed")
+        value = m.group(1).strip()
+        if value.startswith(b"("):
+            return np.tile(np.array(value.strip(b"()").split(), dtype=float), (ncells, 1))
+        return np.full(ncells, float(value))
+    raise ValueError(f"{path}: no internalField found")
+
+
+def latest_time(case):
+    """Name of the latest time directory of a case (not 0)."""
+    times = []
+    for name in os.listdir(case):
+        try:
+            times.append((float(name), name))
+        except ValueError:
+            pass
+    if not times:
+        raise FileNotFoundError(f"{case}: no time directories")
+    return max(times)[1]
+
+
+def run(case, *args, log=None, np_=1):
+    """Run an application on case; its output goes to case/log.<name>.
+
+    np_ > 1 runs it with mpirun on that many ranks and -parallel.
+    Raises CalledProcessError (with the log's tail) on failure.
+    """
+    app = os.path.basename(args[0])
+    log = log or f"log.{app}"
+    cmd = list(args)
+    if np_ > 1:
+        cmd = ["mpirun", "-np", str(np_)] + cmd + ["-parallel"]
+    with open(os.path.join(case, log), "w") as out:
+        proc = subprocess.run(cmd, cwd=case, stdout=out, stderr=subprocess.STDOUT)
+    if proc.returncode != 0:
+        with open(os.path.join(case, log)) as f:
+            tail = "".join(f.readlines()[-30:])
+        raise subprocess.CalledProcessError(proc.returncode, cmd, output=tail)
+    return os.path.join(case, log)
+
+
+def set_entry(case, dict_path, entry, value):
+    """Set one entry of a case dictionary with foamDictionary."""
+    subprocess.run(["foamDictionary", "-entry", entry, "-set", str(value),
+                    os.path.join(case, dict_path)],
+                   check=True, stdout=subprocess.DEVNULL)
+
+
+def get_entry(case, dict_path, entry):
+    """Value of one entry of a case dictionary (foamDictionary -value)."""
+    return subprocess.run(["foamDictionary", "-entry", entry, "-value",
+                           os.path.join(case, dict_path)],
+                          check=True, capture_output=True, text=True).stdout.strip()
+
+
+def copy_case(src, dst):
+    """Fresh copy of a case directory (dst is replaced)."""
+    if os.path.exists(dst):
+        shutil.rmtree(dst)
+    shutil.copytree(src, dst, symlinks=True)
+    return dst
+
+
+def read_list(path):
+    """Values of an ASCII IOField file (e.g. a parcel property): (n,) or (n, 3)."""
+    with open(path, "rb") as f:
+        text = f.read()
+    m = re.search(rb"\n(\d+)\s*\n\(", text)
+    if not m:
+        m2 = re.search(rb"\n(\d+)\s*\{\s*([^}]*)\}", text)  # n{value}: all equal
+        if m2:
+            n, value = int(m2.group(1)), m2.group(2).strip()
+            if value.startswith(b"("):
+                return np.tile(np.array(value.strip(b"()").split(), float), (n, 1))
+            return np.full(n, float(value))
+        raise ValueError(f"{path}: no list found")
+    n = int(m.group(1))
+    body = text[m.end():text.index(b"\n)", m.end())]
+    if b"(" in body:
+        values = np.array(body.replace(b"(", b" ").replace(b")", b" ").split(),
+                          float).reshape(-1, 3)
+    else:
+        values = np.array(body.split(), float)
+    if len(values) != n:
+        raise ValueError(f"{path}: expected {n} values, read {len(values)}")
+    return values

@@ -1,0 +1,211 @@
+#!/usr/bin/python3
+"""Parity of rarefiedMultiphaseFoam with stock dsmcFoam on dsmcFoam's tutorials.
+
+For each case (copied from the OpenFOAM tutorials of the SDK), meshed with
+blockMesh and initialised once by rarefiedMultiphaseInitialise:
+
+  initial state  simulator count, mean velocity and temperature of each
+                 species against dsmcInitialiseDict (analytic; 5 standard
+                 errors: Bernoulli remainders per tet, Maxwellian sampling)
+  stock          dsmcFoam, serial
+  ours           rarefiedMultiphaseFoam, serial, no randomSeed: same random
+                 stream as dsmcFoam, so every file of the final time
+                 directory must be byte-identical to stock's (the parcel
+                 files' class line aside)
+  seed1..seed6   rarefiedMultiphaseFoam, randomSeed 1..6: the noise ensemble
+  parallel       rarefiedMultiphaseFoam on 2 METIS ranks (decomposePar,
+                 mpirun, reconstructPar), no randomSeed
+
+and "stock" and "parallel" must each lie within the ensemble's noise
+(rmf.stats: domain-mean level and cell pattern, Student prediction
+intervals, alpha = 1e-3) for rhoNMean, UMean, translationalT, overallT, p.
+
+Reduced mode (default, for ./Alltest): fewer steps, and for supersonicCorner
+ten times fewer simulators (nEquivalentParticles x 10).  Full mode
+(--full): the tutorials' dictionaries unchanged (hours for supersonicCorner).
+
+Usage: parity.py [--full] [case ...]
+"""
+
+import argparse
+import filecmp
+import os
+import sys
+from concurrent.futures import ThreadPoolExecutor
+
+import numpy as np
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                "..", "..", "src", "python"))
+
+from rmf import foam, stats  # noqa: E402
+
+CASES = ("freeSpacePeriodic", "freeSpaceStream", "supersonicCorner", "wedge15Ma5")
+
+# Reduced mode: steps run, and factor on nEquivalentParticles
+REDUCED = {
+    "freeSpacePeriodic": (200, 1),
+    "freeSpaceStream": (200, 1),
+    "supersonicCorner": (100, 10),
+    "wedge15Ma5": (400, 1),
+}
+
+SEEDS = tuple(f"seed{k}" for k in range(1, 7))
+
+FIELDS = ("rhoNMean", "UMean", "translationalT", "overallT", "p")
+
+BUILD = os.path.join(foam.PROJECT_DIR, "build", "validation", "dsmcParity")
+
+K_B = 1.380649e-23
+
+
+def tutorial(case):
+    return os.path.join(os.environ["FOAM_TUTORIALS"], "discreteMethods", "dsmcFoam", case)
+
+
+def prepare(case, full):
+    """Meshed and initialised case directory: (root, init)."""
+    root = os.path.join(BUILD, ("full" if full else "reduced"), case)
+    mesh = foam.copy_case(tutorial(case), os.path.join(root, "mesh"))
+    if not full:
+        steps, factor = REDUCED[case]
+        dt = float(foam.get_entry(mesh, "system/controlDict", "deltaT"))
+        end = f"{steps*dt:.6g}"
+        foam.set_entry(mesh, "system/controlDict", "endTime", end)
+        foam.set_entry(mesh, "system/controlDict", "writeInterval", end)
+        foam.set_entry(mesh, "system/controlDict", "startFrom", "startTime")
+        if factor != 1:
+            n = float(foam.get_entry(mesh, "constant/dsmcProperties", "nEquivalentParticles"))
+            foam.set_entry(mesh, "constant/dsmcProperties", "nEquivalentParticles",
+                           f"{n*factor:g}")
+    foam.run(mesh, "blockMesh")
+    init = foam.copy_case(mesh, os.path.join(root, "init"))
+    foam.run(init, "rarefiedMultiphaseInitialise")
+    foam.run(init, "postProcess", "-func", "writeCellVolumes", "-time", "0")
+    return root, init
+
+
+def run_all(case, full=False):
+    """Run every variant of one case; return the root directory."""
+    root, init = prepare(case, full)
+    runs = {name: foam.copy_case(init, os.path.join(root, name))
+            for name in ("stock", "ours", "parallel") + SEEDS}
+    for k, name in enumerate(SEEDS, start=1):
+        foam.set_entry(runs[name], "constant/dsmcProperties", "randomSeed", k)
+
+    serial = [("stock", "dsmcFoam")] + [(name, "rarefiedMultiphaseFoam")
+                                        for name in ("ours",) + SEEDS]
+    with ThreadPoolExecutor(max_workers=2) as pool:
+        for job in [pool.submit(foam.run, runs[name], app) for name, app in serial]:
+            job.result()
+
+    par = runs["parallel"]
+    foam.set_entry(par, "system/decomposeParDict", "numberOfSubdomains", 2)
+    foam.set_entry(par, "system/decomposeParDict", "method", "metis")
+    foam.run(par, "decomposePar")
+    foam.run(par, "rarefiedMultiphaseFoam", np_=2)
+    foam.run(par, "reconstructPar", "-latestTime")
+    return root
+
+
+def _strip_class(path):
+    """File bytes without the header line naming the parcel class."""
+    with open(path, "rb") as f:
+        return b"".join(line for line in f if not line.lstrip().startswith(b"class "))
+
+
+def differing_files(a, b, rel=""):
+    """Files under a and b that differ (or exist on one side only)."""
+    cmp = filecmp.dircmp(a, b)
+    diff = [os.path.join(rel, f) for f in cmp.left_only + cmp.right_only + cmp.funny_files]
+    for f in cmp.common_files:
+        fa, fb = os.path.join(a, f), os.path.join(b, f)
+        if not filecmp.cmp(fa, fb, shallow=False):
+            if "lagrangian" not in rel or _strip_class(fa) != _strip_class(fb):
+                diff.append(os.path.join(rel, f))
+    for sub in cmp.common_dirs:
+        diff += differing_files(os.path.join(a, sub), os.path.join(b, sub),
+                                os.path.join(rel, sub))
+    return diff
+
+
+def initial_state_checks(init):
+    """Analytic checks of the initial state: list of (name, passed, text)."""
+    cloud = os.path.join(init, "0", "lagrangian", "dsmc")
+    U = foam.read_list(os.path.join(cloud, "U"))
+    type_id = foam.read_list(os.path.join(cloud, "typeId")).astype(int)
+    volume = foam.read_field(os.path.join(init, "0", "V")).sum()
+    props = "constant/dsmcProperties"
+    species = foam.get_entry(init, props, "typeIdList").strip("()").split()
+    w = float(foam.get_entry(init, props, "nEquivalentParticles"))
+    idict = "system/dsmcInitialiseDict"
+    T0 = float(foam.get_entry(init, idict, "temperature"))
+    U0 = np.array(foam.get_entry(init, idict, "velocity").strip("()").split(), float)
+    n_tets = 6*foam.n_cells(init)  # at least: each cell has several tets
+
+    checks = []
+    for s, name in enumerate(species):
+        try:
+            n = float(foam.get_entry(init, idict, f"numberDensities/{name}"))
+        except Exception:
+            continue
+        c = U[type_id == s]
+        expected = n*volume/w
+        # Each tet adds a Bernoulli remainder: variance at most n_tets/4
+        tol = 5*np.sqrt(n_tets/4)
+        checks.append((f"{name} count", abs(len(c) - expected) <= tol,
+                       f"{len(c)} vs {expected:.1f} (tol {tol:.1f})"))
+        m = float(foam.get_entry(init, props, f"moleculeProperties/{name}/mass"))
+        sd = np.sqrt(K_B*T0/m)
+        mean = c.mean(axis=0)
+        tol = 5*sd/np.sqrt(len(c))
+        checks.append((f"{name} mean velocity", np.all(np.abs(mean - U0) <= tol),
+                       f"{mean} vs {U0} (tol {tol:.3g} per component)"))
+        T = m*np.mean(np.sum((c - U0)**2, axis=1))/(3*K_B)
+        # Sample temperature: relative standard error sqrt(2/(3N))
+        tol = 5*T0*np.sqrt(2/(3*len(c)))
+        checks.append((f"{name} temperature", abs(T - T0) <= tol,
+                       f"{T:.2f} K vs {T0:g} K (tol {tol:.2f} K)"))
+    return checks
+
+
+def check(root):
+    """(exact differences, initial-state checks, statistical checks)."""
+    d = {name: os.path.join(root, name) for name in
+         ("init", "stock", "ours", "parallel") + SEEDS}
+    t = foam.latest_time(d["stock"])
+    exact = differing_files(os.path.join(d["stock"], t), os.path.join(d["ours"], t))
+
+    n = foam.n_cells(d["stock"])
+    results = []
+    for field in FIELDS:
+        v = {name: foam.read_field(os.path.join(d[name], t, field), n)
+             for name in ("stock", "parallel") + SEEDS}
+        ensemble = [v[name] for name in SEEDS]
+        for run in ("stock", "parallel"):
+            results += stats.compare(f"{field} {run}", v[run], ensemble)
+    return exact, initial_state_checks(d["init"]), results
+
+
+def report(case, exact, initial, results):
+    """Print PASS/FAIL lines; return the number of failures."""
+    print(f"{case}: exact reproduction of dsmcFoam: "
+          + ("PASS" if not exact else "FAIL, differing: " + ", ".join(exact)))
+    for name, ok, text in initial:
+        print(f"{case}: {'PASS' if ok else 'FAIL'} initial {name}: {text}")
+    for r in results:
+        print(f"{case}: {r}")
+    return bool(exact) + sum(not ok for _, ok, _ in initial) + sum(not r.passed for r in results)
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("--full", action="store_true", help="tutorials unchanged")
+    parser.add_argument("cases", nargs="*", default=CASES)
+    args = parser.parse_args()
+    failed = sum(report(case, *check(run_all(case, args.full))) for case in args.cases)
+    return 1 if failed else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
