@@ -118,6 +118,19 @@ def copy_case(src, dst):
     return dst
 
 
+def copy_setup(src, dst):
+    """Fresh copy of a case's set-up only: 0/, constant/, system/, without
+    what blockMesh and the initialiser write there (dst is replaced)."""
+    if os.path.exists(dst):
+        shutil.rmtree(dst)
+    products = shutil.ignore_patterns("polyMesh", "lagrangian", "uniform",
+                                      "*SigmaTcRMax", "V", "C", "C?")
+    for sub in ("0", "constant", "system"):
+        shutil.copytree(os.path.join(src, sub), os.path.join(dst, sub),
+                        ignore=products)
+    return dst
+
+
 def read_list(path):
     """Values of an ASCII IOField file (e.g. a parcel property): (n,) or (n, 3)."""
     with open(path, "rb") as f:
@@ -141,3 +154,35 @@ def read_list(path):
     if len(values) != n:
         raise ValueError(f"{path}: expected {n} values, read {len(values)}")
     return values
+
+
+def read_patch_field(path, patch):
+    """Values of one patch of an ASCII vol field file: (faces,) or (faces, 3)."""
+    with open(path, "rb") as f:
+        text = f.read()
+    start = text.index(b"boundaryField")
+    m = re.search(rb"\n\s*" + re.escape(patch.encode()) + rb"\s*\{", text[start:])
+    if not m:
+        raise ValueError(f"{path}: no patch {patch}")
+    block = text[start + m.end():]
+    block = block[:block.index(b"}")]
+    v = re.search(rb"value\s+nonuniform\s+List<(\w+)>\s*(\d+)\s*\((.*)\)\s*;", block, re.S)
+    if not v:
+        raise ValueError(f"{path}: patch {patch} has no nonuniform value")
+    body = v.group(3)
+    if v.group(1) == b"vector":
+        return np.array(body.replace(b"(", b" ").replace(b")", b" ").split(),
+                        float).reshape(-1, 3)
+    return np.array(body.split(), float)
+
+
+def log_values(log, label):
+    """Numbers after 'label =' on each matching line of a solver log."""
+    pattern = re.compile(r"^\s*" + re.escape(label) + r"\s*=\s*(.*)$")
+    rows = []
+    with open(log) as f:
+        for line in f:
+            m = pattern.match(line)
+            if m:
+                rows.append([float(x) for x in m.group(1).replace("/", " ").split()])
+    return np.array(rows)

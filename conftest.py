@@ -1,0 +1,25 @@
+"""pytest configuration for ./Alltest: project helpers on sys.path, --long."""
+
+import os
+import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "src", "python"))
+
+
+def pytest_addoption(parser):
+    parser.addoption("--long", action="store_true",
+                     help="also run the long checks (full-size tutorials)")
+
+
+def pytest_configure(config):
+    config.addinivalue_line("markers", "long: long run, only with --long")
+
+
+def pytest_collection_modifyitems(config, items):
+    import pytest
+    if config.getoption("--long"):
+        return
+    skip = pytest.mark.skip(reason="long run: use ./Alltest --long")
+    for item in items:
+        if "long" in item.keywords:
+            item.add_marker(skip)
