@@ -19,8 +19,9 @@ Description
       2. gas move                 gasCloud::evolve; per simulator
                                   gasParcel::afterMove is the hook for the
                                   axisymmetric rotation into the meridional
-                                  plane; radial-weight cloning/deletion is a
-                                  pass over the cloud after the move
+                                  plane and the radial-weight decision
+                                  (clones join the cloud at the end of
+                                  gasCloud::evolve)
       3. gas-gas collisions       gasCloud::evolve (NTC, BinaryCollisionModel),
                                   then the instantaneous gas fields are sampled
       4. solid evolve             hook "solid phase" below: interphase force

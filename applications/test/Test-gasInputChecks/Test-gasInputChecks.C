@@ -185,6 +185,21 @@ int main(int argc, char *argv[])
         );
     }
 
+    for
+    (
+        const word& model
+      : {"BinaryCollisionModel", "WallInteractionModel", "InflowBoundaryModel"}
+    )
+    {
+        expectError
+        (
+            "dsmcProperties unknown " + model,
+            changed(props, model, "NoSuchModel"),
+            init,
+            {model, "NoSuchModel", "Valid"}
+        );
+    }
+
     expectError
     (
         "dsmcProperties FreeStream species not in typeIdList",

@@ -5,6 +5,9 @@
 #include "gasCloud.H"
 #include "inputChecks.H"
 #include "polyMeshTetDecomposition.H"
+#include "BinaryCollisionModel.H"
+#include "WallInteractionModel.H"
+#include "InflowBoundaryModel.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -41,6 +44,22 @@ Foam::IOdictionary readProperties
     );
 }
 
+//- The model name of keyword, which must be in the selection table
+template<class Model>
+Foam::word modelName(const Foam::dictionary& dict, const Foam::word& keyword)
+{
+    const Foam::word name(dict.get<Foam::word>(keyword));
+    const auto& table = *Model::dictionaryConstructorTablePtr_;
+
+    if (!table.found(name))
+    {
+        FatalIOErrorInLookup(dict, keyword, name, table)
+            << Foam::exit(Foam::FatalIOError);
+    }
+
+    return name;
+}
+
 } // End anonymous namespace
 
 
@@ -70,7 +89,12 @@ Foam::wordList Foam::gasCloudInputCheck::checkProperties
         getClosed(props, "omega", 0.5, 1.0);
     }
 
-    const word collision(dict.get<word>("BinaryCollisionModel"));
+    typedef DSMCCloud<gasParcel> cloudType;
+
+    const word collision
+    (
+        modelName<BinaryCollisionModel<cloudType>>(dict, "BinaryCollisionModel")
+    );
     if (collision == "VariableHardSphere")
     {
         getPositive(dict.subDict(collision + "Coeffs"), "Tref");
@@ -82,7 +106,11 @@ Foam::wordList Foam::gasCloudInputCheck::checkProperties
         getClosed(coeffs, "relaxationCollisionNumber", 1, GREAT);
     }
 
-    if (dict.get<word>("WallInteractionModel") == "MixedDiffuseSpecular")
+    const word wall
+    (
+        modelName<WallInteractionModel<cloudType>>(dict, "WallInteractionModel")
+    );
+    if (wall == "MixedDiffuseSpecular")
     {
         getClosed
         (
@@ -90,7 +118,11 @@ Foam::wordList Foam::gasCloudInputCheck::checkProperties
         );
     }
 
-    if (dict.get<word>("InflowBoundaryModel") == "FreeStream")
+    const word inflow
+    (
+        modelName<InflowBoundaryModel<cloudType>>(dict, "InflowBoundaryModel")
+    );
+    if (inflow == "FreeStream")
     {
         const dictionary& densities =
             dict.subDict("FreeStreamCoeffs").subDict("numberDensities");

@@ -1,0 +1,146 @@
+#!/usr/bin/python3
+"""Wall-time parity of rarefiedMultiphaseFoam with stock dsmcFoam.
+
+Method: the dsmcFoam tutorial case is copied to
+build/bench/dsmcParity/<case>/init, set to run --steps steps (endTime =
+steps*deltaT, written once at the end, from startTime), meshed with
+blockMesh and initialised with dsmcInitialise once.  Each repetition then
+runs stock dsmcFoam and our rarefiedMultiphaseFoam, alternately (stock,
+ours, stock, ours, ...), one at a time, serially on one rank (no mpirun;
+OMPI_/PMIX_ variables are removed from the environment), each on a fresh
+copy of the initialised case.  Each run's wall clock is timed from here
+around the whole process (start-up and the final write included); its CPU
+time (user+sys) is shown beside it, as a check for a busy machine: the
+wall time of a run that had a core to itself is close to its CPU time.
+
+Particle-steps: the solvers print per step "Number of molecules = ..." (real
+molecules); divided by nEquivalentParticles this gives the simulators of
+that step, summed over all steps of the log.  Particle-steps per second
+are reported for each solver's best (minimum) time.
+
+The result is a ratio measured in one invocation on one machine, not an
+absolute timing: the final line gives ours/stock of the minimum times
+(target <= 1.10; "MISSES TARGET" when above).  The exit status is 0 unless
+a run fails: a benchmark is not a test.
+
+Run from the project directory:
+
+    . etc/bashrc && bench/dsmcParity/bench.py [--case C] [--steps N] [--repeat R]
+"""
+
+import argparse
+import os
+import re
+import resource
+import statistics
+import subprocess
+import sys
+import time
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                "..", "..", "src", "python"))
+
+from rmf import foam  # noqa: E402
+
+CASES = ("freeSpacePeriodic", "freeSpaceStream", "supersonicCorner", "wedge15Ma5")
+SOLVERS = {"stock": "dsmcFoam", "ours": "rarefiedMultiphaseFoam"}
+TARGET = 1.10
+BUILD = os.path.join(foam.PROJECT_DIR, "build", "bench", "dsmcParity")
+MOLECULES = re.compile(r"^\s*Number of molecules\s*=\s*(\S+)\s*$", re.M)
+
+
+def prepare(case, steps):
+    """Meshed and initialised copy of the tutorial: (root, init)."""
+    tutorial = os.path.join(os.environ["FOAM_TUTORIALS"], "discreteMethods", "dsmcFoam", case)
+    root = os.path.join(BUILD, case)
+    init = foam.copy_case(tutorial, os.path.join(root, "init"))
+    dt = float(foam.get_entry(init, "system/controlDict", "deltaT"))
+    end = f"{steps*dt:.6g}"
+    foam.set_entry(init, "system/controlDict", "endTime", end)
+    foam.set_entry(init, "system/controlDict", "writeInterval", end)
+    foam.set_entry(init, "system/controlDict", "startFrom", "startTime")
+    foam.run(init, "blockMesh")
+    foam.run(init, "dsmcInitialise")
+    return root, init
+
+
+def particle_steps(log, n_equivalent, steps):
+    """Sum over the steps of a solver log of the number of simulators."""
+    with open(log) as f:
+        molecules = [float(v) for v in MOLECULES.findall(f.read())]
+    if len(molecules) != steps:
+        raise RuntimeError(f"{log}: {len(molecules)} steps reported, {steps} expected")
+    return sum(round(m/n_equivalent) for m in molecules)
+
+
+def timed_run(root, init, solver, rep, n_equivalent, steps):
+    """Run one solver on a fresh copy of init: (wall, CPU time [s], particle-steps)."""
+    case = foam.copy_case(init, os.path.join(root, f"{solver}{rep}"))
+    cpu = resource.getrusage(resource.RUSAGE_CHILDREN)
+    start = time.perf_counter()
+    log = foam.run(case, SOLVERS[solver])
+    wall = time.perf_counter() - start
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
+    cpu = after.ru_utime + after.ru_stime - cpu.ru_utime - cpu.ru_stime
+    return wall, cpu, particle_steps(log, n_equivalent, steps)
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("--case", choices=CASES, default="freeSpaceStream")
+    parser.add_argument("--steps", type=int, default=300)
+    parser.add_argument("--repeat", type=int, default=3)
+    args = parser.parse_args()
+    if "FOAM_TUTORIALS" not in os.environ:
+        sys.exit("bench dsmcParity: no OpenFOAM environment (. etc/bashrc first)")
+
+    for name in [n for n in os.environ if n.startswith(("OMPI_", "PMIX_"))]:
+        del os.environ[name]
+
+    root, init = prepare(args.case, args.steps)
+    n_equivalent = float(foam.get_entry(init, "constant/dsmcProperties",
+                                        "nEquivalentParticles"))
+    print(f"bench dsmcParity {args.case}: {args.steps} steps, {args.repeat} "
+          f"repetitions, serial, in {root}")
+
+    times = {solver: [] for solver in SOLVERS}
+    cpus = {solver: [] for solver in SOLVERS}
+    work = {solver: [] for solver in SOLVERS}
+    for rep in range(1, args.repeat + 1):
+        for solver in SOLVERS:
+            wall, cpu, ps = timed_run(root, init, solver, rep, n_equivalent, args.steps)
+            times[solver].append(wall)
+            cpus[solver].append(cpu)
+            work[solver].append(ps)
+        print(f"  repetition {rep}: stock {times['stock'][-1]:.2f} s, "
+              f"ours {times['ours'][-1]:.2f} s, "
+              f"ratio {times['ours'][-1]/times['stock'][-1]:.3f} "
+              f"(CPU: stock {cpus['stock'][-1]:.2f} s, ours {cpus['ours'][-1]:.2f} s)",
+              flush=True)
+
+    best = {solver: min(times[solver]) for solver in SOLVERS}
+    rate = {solver: work[solver][times[solver].index(best[solver])]/best[solver]
+            for solver in SOLVERS}
+    median = {solver: statistics.median(times[solver]) for solver in SOLVERS}
+    ratio = best["ours"]/best["stock"]
+    print(f"  best:   stock {best['stock']:.2f} s, ours {best['ours']:.2f} s, "
+          f"ratio {ratio:.3f}")
+    print(f"  median: stock {median['stock']:.2f} s, ours {median['ours']:.2f} s, "
+          f"ratio {median['ours']/median['stock']:.3f}")
+    print(f"  best CPU time (user+sys; wall >> CPU means a busy machine): "
+          f"ratio {min(cpus['ours'])/min(cpus['stock']):.3f}")
+    print(f"  particle-steps per run: stock {work['stock'][0]}, ours {work['ours'][0]}")
+    verdict = " MISSES TARGET" if ratio > TARGET else ""
+    print(f"bench dsmcParity {args.case}: ratio ours/stock = {ratio:.3f} "
+          f"(target <= {TARGET:.2f}){verdict}, stock {rate['stock']:.2e} particle-steps/s, "
+          f"ours {rate['ours']:.2e} particle-steps/s")
+
+
+if __name__ == "__main__":
+    try:
+        main()
+    except (subprocess.CalledProcessError, RuntimeError, OSError) as error:
+        print(f"bench dsmcParity: FAILED: {error}", file=sys.stderr)
+        if getattr(error, "output", None):
+            print(error.output, file=sys.stderr)
+        sys.exit(1)
