@@ -335,12 +335,7 @@ Foam::gasCloud::gasCloud(const word& cloudName, const fvMesh& mesh)
     gasCloudInputCheck(cloudName, mesh),
     DSMCCloud<gasParcel>(cloudName, mesh, true),
     nEscapedStep_(mesh.boundaryMesh().size(), Zero),
-    nLostStep_(0),
     nEscapedTotal_(mesh.boundaryMesh().size(), Zero),
-    nLostTotal_(0),
-    nInflowTotal_(0),
-    nInflowLast_(0),
-    nRemovedLast_(0),
     nPresent_(returnReduce(this->size(), sumOp<label>()))
 {
     seedFromCase();
@@ -357,13 +352,7 @@ Foam::gasCloud::gasCloud
     gasCloudInputCheck(cloudName, mesh, initialiseDict),
     DSMCCloud<gasParcel>(cloudName, mesh, emptied(initialiseDict)),
     nEscapedStep_(mesh.boundaryMesh().size(), Zero),
-    nLostStep_(0),
-    nEscapedTotal_(mesh.boundaryMesh().size(), Zero),
-    nLostTotal_(0),
-    nInflowTotal_(0),
-    nInflowLast_(0),
-    nRemovedLast_(0),
-    nPresent_(0)
+    nEscapedTotal_(mesh.boundaryMesh().size(), Zero)
 {
     fill(initialiseDict);
     nPresent_ = returnReduce(this->size(), sumOp<label>());
