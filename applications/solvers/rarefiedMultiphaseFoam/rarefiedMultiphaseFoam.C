@@ -11,7 +11,7 @@ Description
     Transient solver for rarefied gas flows (DSMC) carrying solid grains
     (Lagrangian parcels).  Each phase exists only when its dictionary does:
     constant/dsmcProperties for the gas.  A dsmcFoam case runs unchanged and,
-    with the default randomSeed, reproduces dsmcFoam.
+    without a randomSeed keyword, reproduces dsmcFoam byte for byte.
 
     One step of length deltaT (SPEC.md section 1), and where each part lives:
 
@@ -23,7 +23,9 @@ Description
                                   (clones join the cloud at the end of
                                   gasCloud::evolve)
       3. gas-gas collisions       gasCloud::evolve (NTC, BinaryCollisionModel),
-                                  then the instantaneous gas fields are sampled
+                                  then the instantaneous gas fields are
+                                  sampled (upstream's order: what steps 4-5
+                                  change is sampled in the next step)
       4. solid evolve             hook "solid phase" below: interphase force
                                   and heat from the molecules now in each
                                   cell, solid-solid model, parcel move
