@@ -51,14 +51,9 @@ MOLECULES = re.compile(r"^\s*Number of molecules\s*=\s*(\S+)\s*$", re.M)
 
 def prepare(case, steps):
     """Meshed and initialised copy of the tutorial: (root, init)."""
-    tutorial = os.path.join(os.environ["FOAM_TUTORIALS"], "discreteMethods", "dsmcFoam", case)
     root = os.path.join(BUILD, case)
-    init = foam.copy_case(tutorial, os.path.join(root, "init"))
-    dt = float(foam.get_entry(init, "system/controlDict", "deltaT"))
-    end = f"{steps*dt:.6g}"
-    foam.set_entry(init, "system/controlDict", "endTime", end)
-    foam.set_entry(init, "system/controlDict", "writeInterval", end)
-    foam.set_entry(init, "system/controlDict", "startFrom", "startTime")
+    init = foam.copy_case(foam.dsmc_tutorial(case), os.path.join(root, "init"))
+    foam.set_steps(init, steps)
     foam.run(init, "blockMesh")
     foam.run(init, "dsmcInitialise")
     return root, init

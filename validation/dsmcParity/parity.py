@@ -61,21 +61,13 @@ BUILD = os.path.join(foam.PROJECT_DIR, "build", "validation", "dsmcParity")
 K_B = 1.380649e-23
 
 
-def tutorial(case):
-    return os.path.join(os.environ["FOAM_TUTORIALS"], "discreteMethods", "dsmcFoam", case)
-
-
 def prepare(case, full):
     """Meshed and initialised case directory: (root, init)."""
     root = os.path.join(BUILD, ("full" if full else "reduced"), case)
-    mesh = foam.copy_case(tutorial(case), os.path.join(root, "mesh"))
+    mesh = foam.copy_case(foam.dsmc_tutorial(case), os.path.join(root, "mesh"))
     if not full:
         steps, factor, blocks = REDUCED[case]
-        dt = float(foam.get_entry(mesh, "system/controlDict", "deltaT"))
-        end = f"{steps*dt:.6g}"
-        foam.set_entry(mesh, "system/controlDict", "endTime", end)
-        foam.set_entry(mesh, "system/controlDict", "writeInterval", end)
-        foam.set_entry(mesh, "system/controlDict", "startFrom", "startTime")
+        foam.set_steps(mesh, steps)
         if factor != 1:
             n = float(foam.get_entry(mesh, "constant/dsmcProperties", "nEquivalentParticles"))
             foam.set_entry(mesh, "constant/dsmcProperties", "nEquivalentParticles",

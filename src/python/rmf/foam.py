@@ -110,6 +110,21 @@ def get_entry(case, dict_path, entry):
                           check=True, capture_output=True, text=True).stdout.strip()
 
 
+def dsmc_tutorial(name):
+    """Path of one of OpenFOAM's dsmcFoam tutorials."""
+    return os.path.join(os.environ["FOAM_TUTORIALS"], "discreteMethods", "dsmcFoam", name)
+
+
+def set_steps(case, steps):
+    """Run a case from its start time for steps time steps, written once at
+    the end (endTime = writeInterval = steps*deltaT)."""
+    control = "system/controlDict"
+    end = f"{steps*float(get_entry(case, control, 'deltaT')):.6g}"
+    set_entry(case, control, "endTime", end)
+    set_entry(case, control, "writeInterval", end)
+    set_entry(case, control, "startFrom", "startTime")
+
+
 def copy_case(src, dst):
     """Fresh copy of a case directory (dst is replaced)."""
     if os.path.exists(dst):
