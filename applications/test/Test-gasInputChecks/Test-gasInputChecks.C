@@ -155,33 +155,40 @@ int main(int argc, char *argv[])
         report(msg.empty(), "valid dictionaries pass" + (msg.empty() ? "" : ": " + msg));
     }
 
-    // keyword path and bad value (written as the message prints it); the
-    // message must name the keyword, the value and the valid range
-    const List<Tuple2<word, string>> badProperties
+    // Dictionary (true: dsmcProperties, false: dsmcInitialiseDict), keyword
+    // path and bad value (written as the message prints it); the message
+    // must name the keyword, the value and the valid range
+    struct badValue { bool inProperties; word path; string value; };
+    const List<badValue> badValues
     ({
-        {"nEquivalentParticles", "-1e+12"},
-        {"nEquivalentParticles", "0"},
-        {"randomSeed", "-3"},
-        {"randomSeed", "5000"},
-        {"moleculeProperties/N2/mass", "-4.65e-26"},
-        {"moleculeProperties/N2/diameter", "0"},
-        {"moleculeProperties/Ar/omega", "1.3"},
-        {"moleculeProperties/Ar/internalDegreesOfFreedom", "-1"},
-        {"MixedDiffuseSpecularCoeffs/diffuseFraction", "1.5"},
-        {"LarsenBorgnakkeVariableHardSphereCoeffs/Tref", "-273"},
-        {"LarsenBorgnakkeVariableHardSphereCoeffs/relaxationCollisionNumber", "0.5"},
-        {"FreeStreamCoeffs/numberDensities/N2", "-1e+20"},
+        {true, "nEquivalentParticles", "-1e+12"},
+        {true, "nEquivalentParticles", "0"},
+        {true, "randomSeed", "-3"},
+        {true, "randomSeed", "5000"},
+        {true, "moleculeProperties/N2/mass", "-4.65e-26"},
+        {true, "moleculeProperties/N2/diameter", "0"},
+        {true, "moleculeProperties/Ar/omega", "1.3"},
+        {true, "moleculeProperties/Ar/internalDegreesOfFreedom", "-1"},
+        {true, "MixedDiffuseSpecularCoeffs/diffuseFraction", "1.5"},
+        {true, "LarsenBorgnakkeVariableHardSphereCoeffs/Tref", "-273"},
+        {true, "LarsenBorgnakkeVariableHardSphereCoeffs/relaxationCollisionNumber", "0.5"},
+        {true, "FreeStreamCoeffs/numberDensities/N2", "-1e+20"},
+        {false, "temperature", "-300"},
+        {false, "temperature", "0"},
+        {false, "numberDensities/N2", "-1e+20"},
+        {false, "randomSeed", "2001"},
     });
 
-    for (const auto& bad : badProperties)
+    for (const badValue& bad : badValues)
     {
-        const word key = bad.first().substr(bad.first().rfind('/') + 1);
+        const word key = bad.path.substr(bad.path.rfind('/') + 1);
         expectError
         (
-            "dsmcProperties " + bad.first() + " = " + bad.second(),
-            changed(props, bad.first(), bad.second()),
-            init,
-            {key, word(bad.second()), "valid"}
+            (bad.inProperties ? "dsmcProperties " : "dsmcInitialiseDict ")
+          + bad.path + " = " + bad.value,
+            bad.inProperties ? changed(props, bad.path, bad.value) : props,
+            bad.inProperties ? init : changed(init, bad.path, bad.value),
+            {key, word(bad.value), "valid"}
         );
     }
 
@@ -215,26 +222,6 @@ int main(int argc, char *argv[])
         init,
         {"He"}
     );
-
-    const List<Tuple2<word, string>> badInitialise
-    ({
-        {"temperature", "-300"},
-        {"temperature", "0"},
-        {"numberDensities/N2", "-1e+20"},
-        {"randomSeed", "2001"},
-    });
-
-    for (const auto& bad : badInitialise)
-    {
-        const word key = bad.first().substr(bad.first().rfind('/') + 1);
-        expectError
-        (
-            "dsmcInitialiseDict " + bad.first() + " = " + bad.second(),
-            props,
-            changed(init, bad.first(), bad.second()),
-            {key, word(bad.second()), "valid"}
-        );
-    }
 
     expectError
     (
