@@ -210,26 +210,28 @@ void Foam::gasCloud::seedFromCase()
 
 void Foam::gasCloud::accountStep(const label nBefore)
 {
-    // Counters as scalars: totals of long runs exceed 32-bit labels
-    scalarField escaped(nEscapedStep_.size());
-    forAll(escaped, patchi)
+    // One sum over processors: per patch the simulators removed, then those
+    // lost, present now and present before.  Scalars: totals of long runs
+    // exceed 32-bit labels
+    const label nPatches = nEscapedStep_.size();
+    scalarField counts(nPatches + 3);
+    forAll(nEscapedStep_, patchi)
     {
-        escaped[patchi] = nEscapedStep_[patchi];
+        counts[patchi] = nEscapedStep_[patchi];
     }
+    counts[nPatches] = nLostStep_;
+    counts[nPatches + 1] = this->size();
+    counts[nPatches + 2] = nBefore;
 
-    scalar lost = nLostStep_;
-    scalar present = this->size();
-    scalar change = present - nBefore;
+    Pstream::listCombineGather(counts, plusEqOp<scalar>());
+    Pstream::listCombineScatter(counts);
 
-    Pstream::listCombineGather(escaped, plusEqOp<scalar>());
-    Pstream::listCombineScatter(escaped);
-    reduce(lost, sumOp<scalar>());
-    reduce(present, sumOp<scalar>());
-    reduce(change, sumOp<scalar>());
+    const SubField<scalar> escaped(counts, nPatches);
+    const scalar lost = counts[nPatches];
 
     nRemovedLast_ = sum(escaped) + lost;
-    nInflowLast_ = change + nRemovedLast_;
-    nPresent_ = present;
+    nInflowLast_ = counts[nPatches + 1] - counts[nPatches + 2] + nRemovedLast_;
+    nPresent_ = counts[nPatches + 1];
 
     nEscapedTotal_ += escaped;
     nLostTotal_ += lost;
