@@ -19,6 +19,21 @@ _NONUNIFORM = re.compile(rb"internalField\s+nonuniform\s+List<(\w+)>\s*(\d+)\s*\
 _UNIFORM = re.compile(rb"internalField\s+uniform\s+([^;]+);")
 
 
+def _values(body, vector):
+    """Numbers of an ASCII list body: (n,) scalars or (n, 3) vectors."""
+    if vector:
+        return np.array(body.replace(b"(", b" ").replace(b")", b" ").split(),
+                        float).reshape(-1, 3)
+    return np.array(body.split(), float)
+
+
+def _uniform(value, n):
+    """n copies of one ASCII value, scalar or "(x y z)"."""
+    if value.startswith(b"("):
+        return np.tile(_values(value, True)[0], (n, 1))
+    return np.full(n, float(value))
+
+
 def n_cells(case):
     """Number of cells of the case's mesh (from the owner file's note)."""
     with open(os.path.join(case, "constant", "polyMesh", "owner"), "rb") as f:
@@ -42,13 +57,9 @@ def read_field(path, ncells=None):
         start = m.end()
         end = text.index(b"\n)", start)
         body = text[start:end]
-        if kind == b"scalar":
-            values = np.array(body.split(), dtype=float)
-        elif kind == b"vector":
-            values = np.array(body.replace(b"(", b" ").replace(b")", b" ").split(),
-                              dtype=float).reshape(-1, 3)
-        else:
+        if kind not in (b"scalar", b"vector"):
             raise ValueError(f"{path}: unsupported List<{kind.decode()}>")
+        values = _values(body, kind == b"vector")
         if len(values) != n:
             raise ValueError(f"{path}: expected {n} values, read {len(values)}")
         return values
@@ -57,9 +68,7 @@ def read_field(path, ncells=None):
         if ncells is None:
             raise ValueError(f"{path}: uniform field, number of cells needed")
         value = m.group(1).strip()
-        if value.startswith(b"("):
-            return np.tile(np.array(value.strip(b"()").split(), dtype=float), (ncells, 1))
-        return np.full(ncells, float(value))
+        return _uniform(value, ncells)
     raise ValueError(f"{path}: no internalField found")
 
 
@@ -154,18 +163,11 @@ def read_list(path):
     if not m:
         m2 = re.search(rb"\n(\d+)\s*\{\s*([^}]*)\}", text)  # n{value}: all equal
         if m2:
-            n, value = int(m2.group(1)), m2.group(2).strip()
-            if value.startswith(b"("):
-                return np.tile(np.array(value.strip(b"()").split(), float), (n, 1))
-            return np.full(n, float(value))
+            return _uniform(m2.group(2).strip(), int(m2.group(1)))
         raise ValueError(f"{path}: no list found")
     n = int(m.group(1))
     body = text[m.end():text.index(b"\n)", m.end())]
-    if b"(" in body:
-        values = np.array(body.replace(b"(", b" ").replace(b")", b" ").split(),
-                          float).reshape(-1, 3)
-    else:
-        values = np.array(body.split(), float)
+    values = _values(body, b"(" in body)
     if len(values) != n:
         raise ValueError(f"{path}: expected {n} values, read {len(values)}")
     return values
@@ -184,11 +186,7 @@ def read_patch_field(path, patch):
     v = re.search(rb"value\s+nonuniform\s+List<(\w+)>\s*(\d+)\s*\((.*)\)\s*;", block, re.S)
     if not v:
         raise ValueError(f"{path}: patch {patch} has no nonuniform value")
-    body = v.group(3)
-    if v.group(1) == b"vector":
-        return np.array(body.replace(b"(", b" ").replace(b")", b" ").split(),
-                        float).reshape(-1, 3)
-    return np.array(body.split(), float)
+    return _values(v.group(3), v.group(1) == b"vector")
 
 
 def log_values(log, label):
