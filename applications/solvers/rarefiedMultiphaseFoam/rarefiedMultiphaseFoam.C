@@ -10,8 +10,11 @@ Group
 Description
     Transient solver for rarefied gas flows (DSMC) carrying solid grains
     (Lagrangian parcels).  Each phase exists only when its dictionary does:
-    constant/dsmcProperties for the gas.  A dsmcFoam case runs unchanged and,
-    without a randomSeed keyword, reproduces dsmcFoam byte for byte.
+    constant/dsmcProperties for the gas, constant/<cloud>Properties for the
+    grains (cloud name from -cloud, default grains; gravity from
+    constant/g).  A dsmcFoam case runs unchanged and, without a randomSeed
+    keyword, reproduces dsmcFoam byte for byte.  Without gas (vacuum) the
+    grains run alone and no gas work is done.
 
     One step of length deltaT (SPEC.md section 1), and where each part lives:
 
@@ -26,9 +29,12 @@ Description
                                   then the instantaneous gas fields are
                                   sampled (upstream's order: what steps 4-5
                                   change is sampled in the next step)
-      4. solid evolve             hook "solid phase" below: interphase force
-                                  and heat from the molecules now in each
-                                  cell, solid-solid model, parcel move
+      4. solid evolve             carrier fields sampled from the molecules
+                                  now in each cell (gasCarrierFields), then
+                                  solidCloud::evolve: injection, forces,
+                                  MPPIC / stochastic collisions, parcel move
+                                  with walls; the coupling's interphase
+                                  force and heat will join here
       5. two-way gas update       hook "two-way" below: molecules that
                                   collided with grains take their
                                   post-collision states
@@ -42,6 +48,8 @@ Description
 
 #include "fvCFD.H"
 #include "gasCloud.H"
+#include "solidCloud.H"
+#include "gasCarrierFields.H"
 #include "progressReport.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
@@ -55,6 +63,13 @@ int main(int argc, char *argv[])
 
     #define NO_CONTROL
     #include "postProcess.H"
+
+    argList::addOption
+    (
+        "cloud",
+        "name",
+        "Solid cloud name (default grains): constant/<name>Properties"
+    );
 
     #include "addCheckCaseOptions.H"
     #include "setRootCaseLists.H"
@@ -76,7 +91,15 @@ int main(int argc, char *argv[])
             gas->evolve();
         }
 
-        // Step 4, solid phase: no solid phase yet
+        // Step 4: solid phase
+        if (solids.valid())
+        {
+            if (gas.valid())
+            {
+                carrier->update(gas());
+            }
+            solids->evolve();           // prints its own info()
+        }
 
         // Step 5, two-way: no interphase coupling yet
 

@@ -16,10 +16,15 @@ Description
     dictionaries are checked first: a bad value stops with a FatalIOError
     naming file, keyword and valid range.
 
+    Solid grains: from system/<cloud>InitialiseDict (cloud name from
+    -cloud, default grains), see solidInitialise.H.  Each phase is filled
+    only when its dictionary exists.
+
 \*---------------------------------------------------------------------------*/
 
 #include "fvCFD.H"
 #include "gasCloud.H"
+#include "solidInitialise.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -27,8 +32,14 @@ int main(int argc, char *argv[])
 {
     argList::addNote
     (
-        "Initialise the gas (system/dsmcInitialiseDict) of a"
-        " rarefiedMultiphaseFoam case"
+        "Initialise the gas (system/dsmcInitialiseDict) and the solid grains"
+        " (system/<cloud>InitialiseDict) of a rarefiedMultiphaseFoam case"
+    );
+    argList::addOption
+    (
+        "cloud",
+        "name",
+        "Solid cloud name (default grains)"
     );
 
     #include "setRootCase.H"
@@ -36,6 +47,11 @@ int main(int argc, char *argv[])
     #include "createNamedMesh.H"
 
     // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+    IOstream::defaultPrecision(15);
+
+    const word solidCloudName(args.getOrDefault<word>("cloud", "grains"));
+    const bool solids = initialiseSolids(mesh, solidCloudName);
 
     IOobject initialiseHeader
     (
@@ -46,27 +62,29 @@ int main(int argc, char *argv[])
         IOobject::NO_WRITE
     );
 
-    if (!initialiseHeader.typeHeaderOk<IOdictionary>(true))
+    if (initialiseHeader.typeHeaderOk<IOdictionary>(true))
     {
-        FatalErrorInFunction
-            << "No phase to initialise: " << runTime.system()
-            << "/dsmcInitialiseDict not found" << exit(FatalError);
+        Info<< "Initialising gas for Time = " << runTime.timeName() << nl
+            << endl;
+
+        const IOdictionary initialiseDict(initialiseHeader);
+        gasCloud gas("dsmc", mesh, initialiseDict);
+
+        Info<< nl << "Gas simulators added: "
+            << returnReduce(gas.size(), sumOp<label>()) << nl << endl;
+
+        if (!mesh.write())
+        {
+            FatalErrorInFunction
+                << "Failed writing the initial gas" << exit(FatalError);
+        }
     }
-
-    Info<< "Initialising gas for Time = " << runTime.timeName() << nl << endl;
-
-    const IOdictionary initialiseDict(initialiseHeader);
-    gasCloud gas("dsmc", mesh, initialiseDict);
-
-    Info<< nl << "Gas simulators added: "
-        << returnReduce(gas.size(), sumOp<label>()) << nl << endl;
-
-    IOstream::defaultPrecision(15);
-
-    if (!mesh.write())
+    else if (!solids)
     {
         FatalErrorInFunction
-            << "Failed writing the initial phases" << exit(FatalError);
+            << "No phase to initialise: neither " << runTime.system()
+            << "/dsmcInitialiseDict nor " << runTime.system() << "/"
+            << solidCloudName << "InitialiseDict found" << exit(FatalError);
     }
 
     runTime.printExecutionTime(Info);

@@ -44,22 +44,6 @@ Foam::IOdictionary readProperties
     );
 }
 
-//- The model name of keyword, which must be in the selection table
-template<class Model>
-Foam::word modelName(const Foam::dictionary& dict, const Foam::word& keyword)
-{
-    const Foam::word name(dict.get<Foam::word>(keyword));
-    const auto& table = *Model::dictionaryConstructorTablePtr_;
-
-    if (!table.found(name))
-    {
-        FatalIOErrorInLookup(dict, keyword, name, table)
-            << Foam::exit(Foam::FatalIOError);
-    }
-
-    return name;
-}
-
 } // End anonymous namespace
 
 
@@ -208,37 +192,6 @@ void Foam::gasCloud::seedFromCase()
 }
 
 
-void Foam::gasCloud::accountStep(const label nBefore)
-{
-    // One sum over processors: per patch the simulators removed, then those
-    // lost, present now and present before.  Scalars: totals of long runs
-    // exceed 32-bit labels
-    const label nPatches = nEscapedStep_.size();
-    scalarField counts(nPatches + 3);
-    forAll(nEscapedStep_, patchi)
-    {
-        counts[patchi] = nEscapedStep_[patchi];
-    }
-    counts[nPatches] = nLostStep_;
-    counts[nPatches + 1] = this->size();
-    counts[nPatches + 2] = nBefore;
-
-    Pstream::listCombineGather(counts, plusEqOp<scalar>());
-    Pstream::listCombineScatter(counts);
-
-    const SubField<scalar> escaped(counts, nPatches);
-    const scalar lost = counts[nPatches];
-
-    nRemovedLast_ = sum(escaped) + lost;
-    nInflowLast_ = counts[nPatches + 1] - counts[nPatches + 2] + nRemovedLast_;
-    nPresent_ = counts[nPatches + 1];
-
-    nEscapedTotal_ += escaped;
-    nLostTotal_ += lost;
-    nInflowTotal_ += nInflowLast_;
-}
-
-
 Foam::IOdictionary Foam::gasCloud::emptied(const IOdictionary& initialiseDict)
 {
     IOobject io(initialiseDict);
@@ -336,9 +289,7 @@ Foam::gasCloud::gasCloud(const word& cloudName, const fvMesh& mesh)
 :
     gasCloudInputCheck(cloudName, mesh),
     DSMCCloud<gasParcel>(cloudName, mesh, true),
-    nEscapedStep_(mesh.boundaryMesh().size(), Zero),
-    nEscapedTotal_(mesh.boundaryMesh().size(), Zero),
-    nPresent_(returnReduce(this->size(), sumOp<label>()))
+    account_("Simulators", mesh.boundaryMesh(), this->size())
 {
     seedFromCase();
 }
@@ -353,11 +304,9 @@ Foam::gasCloud::gasCloud
 :
     gasCloudInputCheck(cloudName, mesh, initialiseDict),
     DSMCCloud<gasParcel>(cloudName, mesh, emptied(initialiseDict)),
-    nEscapedStep_(mesh.boundaryMesh().size(), Zero),
-    nEscapedTotal_(mesh.boundaryMesh().size(), Zero)
+    account_("Simulators", mesh.boundaryMesh(), 0)
 {
     fill(initialiseDict);
-    nPresent_ = returnReduce(this->size(), sumOp<label>());
 }
 
 
@@ -367,12 +316,10 @@ void Foam::gasCloud::evolve()
 {
     const label nBefore = this->size();
 
-    nEscapedStep_ = Zero;
-    nLostStep_ = 0;
-
     DSMCCloud<gasParcel>::evolve();
 
-    accountStep(nBefore);
+    // Inflow is not reported by upstream's model: it is the balance
+    account_.closeStep(nBefore, this->size());
 }
 
 
@@ -380,30 +327,7 @@ void Foam::gasCloud::info() const
 {
     DSMCCloud<gasParcel>::info();
 
-    const polyBoundaryMesh& patches = mesh().boundaryMesh();
-
-    Info<< "    Simulators present              = " << nPresent_ << nl
-        << "    Simulators in / out this step   = "
-        << nInflowLast_ << " / " << nRemovedLast_ << nl
-        << "    Simulators in / out since start = "
-        << nInflowTotal_ << " / " << sum(nEscapedTotal_) + nLostTotal_
-        << nl;
-
-    forAll(nEscapedTotal_, patchi)
-    {
-        if (nEscapedTotal_[patchi] > 0)
-        {
-            Info<< "        out through " << patches[patchi].name()
-                << " = " << nEscapedTotal_[patchi] << nl;
-        }
-    }
-
-    if (nLostTotal_ > 0)
-    {
-        Info<< "        lost away from patches = " << nLostTotal_ << nl;
-    }
-
-    Info<< endl;
+    account_.info(mesh().boundaryMesh());
 }
 
 

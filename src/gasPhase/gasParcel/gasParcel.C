@@ -19,8 +19,8 @@ namespace Foam
 Foam::gasParcel::trackingData::trackingData(DSMCCloud<gasParcel>& cloud)
 :
     particle::trackingData(cloud),
-    nEscaped_(owner(cloud).nEscapedStep()),
-    nLost_(owner(cloud).nLostStep())
+    nEscaped_(owner(cloud).account().escapedStep()),
+    nLost_(owner(cloud).account().lostStep())
 {}
 
 

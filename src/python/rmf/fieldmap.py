@@ -11,7 +11,6 @@ prints the picture's path.  Cell centres come from OpenFOAM's
 
 import argparse
 import os
-import subprocess
 
 import matplotlib
 matplotlib.use("Agg")
@@ -29,14 +28,6 @@ LABELS = {
 }
 
 
-def cell_centres(case, time):
-    path = os.path.join(case, time, "C")
-    if not os.path.exists(path):
-        subprocess.run(["postProcess", "-func", "writeCellCentres", "-time", time],
-                       cwd=case, check=True, stdout=subprocess.DEVNULL)
-    return foam.read_field(path)
-
-
 def arrow_cells(C, per_side=20):
     """Cells for about per_side x per_side evenly spread arrows."""
     pick = np.ones(len(C), bool)
@@ -50,7 +41,7 @@ def arrow_cells(C, per_side=20):
 def field_map(case, fields, output, time=None):
     time = time or foam.latest_time(case)
     n = foam.n_cells(case)
-    C = cell_centres(case, time)
+    C = foam.cell_centres(case, time)
     tri = mtri.Triangulation(C[:, 0], C[:, 1])
     width = np.ptp(C[:, 0])/max(np.ptp(C[:, 1]), 1e-30)
     fig, axes = plt.subplots(len(fields), 1, squeeze=False,

@@ -155,6 +155,16 @@ def copy_setup(src, dst):
     return dst
 
 
+def cell_centres(case, time="0"):
+    """Cell centres (n, 3) of a case, written by postProcess -func
+    writeCellCentres when missing."""
+    path = os.path.join(case, time, "C")
+    if not os.path.exists(path):
+        subprocess.run(["postProcess", "-func", "writeCellCentres", "-time", time],
+                       cwd=case, check=True, stdout=subprocess.DEVNULL)
+    return read_field(path)
+
+
 def read_list(path):
     """Values of an ASCII IOField file (e.g. a parcel property): (n,) or (n, 3)."""
     with open(path, "rb") as f:

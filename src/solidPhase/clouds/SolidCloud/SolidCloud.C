@@ -1,0 +1,332 @@
+/*---------------------------------------------------------------------------*\
+  rarefiedMultiphaseFoam
+\*---------------------------------------------------------------------------*/
+
+#include "SolidCloud.H"
+#include "inputChecks.H"
+#include "zeroGradientFvPatchFields.H"
+#include "PackingModel.H"
+#include "DampingModel.H"
+#include "IsotropyModel.H"
+#include "PatchInteractionModel.H"
+#include "StochasticCollisionModel.H"
+#include "ParticleStressModel.H"
+#include "TimeScaleModel.H"
+#include "AveragingMethod.H"
+
+// * * * * * * * * * * * * * * * Input checks  * * * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace solidCloudChecks
+{
+
+using namespace inputChecks;
+
+//- Stop unless 0 < value < 1
+inline void checkOpenUnit(const dictionary& dict, const word& keyword)
+{
+    const scalar value = dict.get<scalar>(keyword);
+
+    if (!(value > 0 && value < 1))
+    {
+        outOfRange(dict, keyword, value, "(0, 1)");
+    }
+}
+
+
+//- The particle stress model of an MPPIC coefficient dictionary
+inline void checkParticleStress(const dictionary& coeffs)
+{
+    const dictionary& dict = coeffs.subDict("particleStressModel");
+    const word type(modelName<ParticleStressModel>(dict, "type"));
+
+    checkOpenUnit(dict, "alphaPacked");
+
+    if (type == "HarrisCrighton")
+    {
+        getPositive(dict, "pSolid");
+        getNonNegative(dict, "beta");
+        getPositive(dict, "eps");
+    }
+}
+
+
+//- The time scale model of an MPPIC coefficient dictionary
+inline void checkTimeScale(const dictionary& coeffs)
+{
+    const dictionary& dict = coeffs.subDict("timeScaleModel");
+    modelName<TimeScaleModel>(dict, "type");
+
+    checkOpenUnit(dict, "alphaPacked");
+    getClosed(dict, "e", 0, 1);
+}
+
+
+//- Restitution and friction of one wall-interaction dictionary
+inline void checkRebound(const dictionary& dict)
+{
+    if (dict.found("e"))
+    {
+        getClosed(dict, "e", 0, 1);
+    }
+    if (dict.found("mu"))
+    {
+        getClosed(dict, "mu", 0, 1);
+    }
+}
+
+} // End namespace solidCloudChecks
+} // End namespace Foam
+
+
+template<class CloudType>
+const Foam::word& Foam::SolidCloud<CloudType>::checkInput
+(
+    const word& cloudName,
+    const fvMesh& mesh
+)
+{
+    using namespace solidCloudChecks;
+
+    typedef typename CloudType::MPPICCloudType mppicType;
+    typedef typename CloudType::kinematicCloudType kinematicType;
+
+    const IOdictionary props
+    (
+        IOobject
+        (
+            cloudName + "Properties",
+            mesh.time().constant(),
+            mesh,
+            IOobject::MUST_READ,
+            IOobject::NO_WRITE,
+            false
+        )
+    );
+
+    const dictionary& solution = props.subDict("solution");
+    modelName<AveragingMethod<scalar>>(solution, "averagingMethod");
+
+    const dictionary& constProps = props.subDict("constantProperties");
+    getPositive(constProps, "rho0");
+    getPositive(constProps, "T0");
+    getPositive(constProps, "Cp0");
+    getClosed(constProps, "specularFraction", 0, 1);
+    getClosed(constProps, "thermalAccommodation", 0, 1);
+
+    const dictionary& models = props.subDict("subModels");
+
+    const word packing
+    (
+        modelName<PackingModel<mppicType>>(models, "packingModel")
+    );
+    if (packing != "none")
+    {
+        checkParticleStress(models.subDict(packing + "Coeffs"));
+    }
+
+    const word damping
+    (
+        modelName<DampingModel<mppicType>>(models, "dampingModel")
+    );
+    if (damping != "none")
+    {
+        checkTimeScale(models.subDict(damping + "Coeffs"));
+    }
+
+    const word isotropy
+    (
+        modelName<IsotropyModel<mppicType>>(models, "isotropyModel")
+    );
+    if (isotropy != "none")
+    {
+        checkTimeScale(models.subDict(isotropy + "Coeffs"));
+    }
+
+    modelName<StochasticCollisionModel<kinematicType>>
+    (
+        models, "stochasticCollisionModel"
+    );
+
+    const word walls
+    (
+        modelName<PatchInteractionModel<kinematicType>>
+        (
+            models, "patchInteractionModel"
+        )
+    );
+    if (walls == "localInteraction")
+    {
+        const PtrList<entry> patches
+        (
+            models.subDict("localInteractionCoeffs").lookup("patches")
+        );
+        for (const entry& e : patches)
+        {
+            if (e.isDict())
+            {
+                checkRebound(e.dict());
+            }
+        }
+    }
+    else if (walls == "standardWallInteraction")
+    {
+        checkRebound(models.subDict("standardWallInteractionCoeffs"));
+    }
+
+    return cloudName;
+}
+
+
+// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
+
+template<class CloudType>
+Foam::label Foam::SolidCloud<CloudType>::nInjected() const
+{
+    label n = 0;
+    for (const auto& injector : this->injectors())
+    {
+        n += injector.parcelsAddedTotal();
+    }
+    return n;
+}
+
+
+template<class CloudType>
+template<class Type>
+void Foam::SolidCloud<CloudType>::writeCellField
+(
+    const word& name,
+    const dimensionSet& dims,
+    const Field<Type>& values
+) const
+{
+    GeometricField<Type, fvPatchField, volMesh> field
+    (
+        IOobject
+        (
+            name + "." + this->name(),
+            this->db().time().timeName(),
+            this->mesh(),
+            IOobject::NO_READ,
+            IOobject::NO_WRITE,
+            false
+        ),
+        this->mesh(),
+        dimensioned<Type>(dims, Zero),
+        zeroGradientFvPatchField<Type>::typeName
+    );
+    field.primitiveFieldRef() = values;
+    field.correctBoundaryConditions();
+    field.write();
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+template<class CloudType>
+Foam::SolidCloud<CloudType>::SolidCloud
+(
+    const word& cloudName,
+    const volScalarField& rho,
+    const volVectorField& U,
+    const volScalarField& mu,
+    const dimensionedVector& g,
+    bool readFields
+)
+:
+    CloudType(checkInput(cloudName, rho.mesh()), rho, U, mu, g, readFields),
+    account_("Parcels", rho.mesh().boundaryMesh(), this->size())
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+template<class CloudType>
+void Foam::SolidCloud<CloudType>::setParcelThermoProperties
+(
+    parcelType& parcel,
+    const scalar lagrangianDt
+)
+{
+    CloudType::setParcelThermoProperties(parcel, lagrangianDt);
+    parcel.setMaterial(this->constProps());
+}
+
+
+template<class CloudType>
+void Foam::SolidCloud<CloudType>::evolve()
+{
+    if (!this->solution().canEvolve())
+    {
+        return;
+    }
+
+    nBefore_ = this->size();
+    nInjectedBefore_ = nInjected();
+
+    // As MPPICCloud::evolve, but tracking with this cloud so that the
+    // parcels reach the account and the material properties
+    typename parcelType::trackingData td(*this);
+    this->solve(*this, td);
+}
+
+
+template<class CloudType>
+template<class TrackCloudType>
+void Foam::SolidCloud<CloudType>::motion
+(
+    TrackCloudType& cloud,
+    typename parcelType::trackingData& td
+)
+{
+    CloudType::motion(cloud, td);
+
+    // Upstream's injection counters are already summed over processors
+    const label nIn =
+        Pstream::master() ? nInjected() - nInjectedBefore_ : 0;
+
+    account_.closeStep(nBefore_, this->size(), nIn);
+}
+
+
+template<class CloudType>
+void Foam::SolidCloud<CloudType>::info()
+{
+    CloudType::info();
+    account_.info(this->mesh().boundaryMesh());
+}
+
+
+template<class CloudType>
+void Foam::SolidCloud<CloudType>::writeFields() const
+{
+    CloudType::writeFields();
+
+    const label nCells = this->mesh().nCells();
+    scalarField nParcels(nCells, Zero);
+    scalarField mass(nCells, Zero);
+    vectorField momentum(nCells, Zero);
+    scalarField heat(nCells, Zero);
+
+    for (const parcelType& p : *this)
+    {
+        const label celli = p.cell();
+        const scalar m = p.nParticle()*p.mass();
+        nParcels[celli] += 1;
+        mass[celli] += m;
+        momentum[celli] += m*p.U();
+        heat[celli] += m*p.T();
+    }
+
+    const scalarField massOrOne(max(mass, VSMALL));
+
+    writeCellField<scalar>("alpha", dimless, this->theta()().primitiveField());
+    writeCellField<scalar>("nParcels", dimless, nParcels);
+    writeCellField<vector>("U", dimVelocity, momentum/massOrOne);
+    writeCellField<scalar>("T", dimTemperature, heat/massOrOne);
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,65 @@
+/*---------------------------------------------------------------------------*\
+  rarefiedMultiphaseFoam
+\*---------------------------------------------------------------------------*/
+
+#include "ZonalGravityForce.H"
+#include "inputChecks.H"
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+template<class CloudType>
+Foam::ZonalGravityForce<CloudType>::ZonalGravityForce
+(
+    CloudType& owner,
+    const fvMesh& mesh,
+    const dictionary& dict
+)
+:
+    ParticleForce<CloudType>(owner, mesh, dict, typeName, true),
+    g_(owner.g().value()),
+    zeroGravity_(mesh.nCells(), false)
+{
+    const word zoneName(this->coeffs().template get<word>("zeroGravityZone"));
+    const label zonei = mesh.cellZones().findZoneID(zoneName);
+
+    if (zonei < 0)
+    {
+        inputChecks::notOneOf
+        (
+            this->coeffs(), "zeroGravityZone", zoneName,
+            mesh.cellZones().names()
+        );
+    }
+
+    for (const label celli : mesh.cellZones()[zonei])
+    {
+        zeroGravity_[celli] = true;
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+template<class CloudType>
+Foam::forceSuSp Foam::ZonalGravityForce<CloudType>::calcNonCoupled
+(
+    const typename CloudType::parcelType& p,
+    const typename CloudType::parcelType::trackingData& td,
+    const scalar dt,
+    const scalar mass,
+    const scalar Re,
+    const scalar muc
+) const
+{
+    forceSuSp value(Zero);
+
+    if (!zeroGravity_[p.cell()])
+    {
+        value.Su() = mass*g_*(1 - td.rhoc()/p.rho());
+    }
+
+    return value;
+}
+
+
+// ************************************************************************* //
