@@ -19,34 +19,6 @@ namespace Foam
 
 // * * * * * * * * * * * * * * * Input checks  * * * * * * * * * * * * * * * //
 
-namespace
-{
-
-Foam::IOdictionary readProperties
-(
-    const Foam::word& cloudName,
-    const Foam::fvMesh& mesh
-)
-{
-    using namespace Foam;
-
-    return IOdictionary
-    (
-        IOobject
-        (
-            cloudName + "Properties",
-            mesh.time().constant(),
-            mesh,
-            IOobject::MUST_READ,
-            IOobject::NO_WRITE,
-            false
-        )
-    );
-}
-
-} // End anonymous namespace
-
-
 Foam::wordList Foam::gasCloudInputCheck::checkProperties
 (
     const dictionary& dict
@@ -158,7 +130,7 @@ Foam::gasCloudInputCheck::gasCloudInputCheck
     const fvMesh& mesh
 )
 {
-    checkProperties(readProperties(cloudName, mesh));
+    checkProperties(inputChecks::readCloudProperties(cloudName, mesh));
 }
 
 
@@ -172,7 +144,7 @@ Foam::gasCloudInputCheck::gasCloudInputCheck
     checkInitialise
     (
         initialiseDict,
-        checkProperties(readProperties(cloudName, mesh))
+        checkProperties(inputChecks::readCloudProperties(cloudName, mesh))
     );
 }
 

@@ -12,7 +12,9 @@ decomposed) give the same alpha(z).
 
 Tolerances and where they come from:
 - parcels: conserved exactly (integer count; every exit is counted by
-  the solver's account, which must show none and no loss).
+  the solver's account, which must show none and no loss), and their
+  temperature, specific heat, specular fraction and accommodation come
+  through the run (and, decomposed, the processor transfers) unchanged.
 - settled bed at 0.6 s: the mean of alpha(z) over the layers below
   0.14 m is alphaPacked = 0.6 within 0.03 (SPEC.md 7.1 / the issue); the
   layers above 0.16 m hold alpha < 0.01 (clear top).
@@ -73,6 +75,16 @@ def n_parcels(case, time):
     """Parcels of the cloud written at time (reconstructed case)."""
     path = os.path.join(case, time, "lagrangian", CLOUD, "nParticle")
     return len(foam.read_list(path)) if os.path.exists(path) else 0
+
+
+def carried(case, time, expected):
+    """Largest deviation of the solid layer's parcel properties at time
+    from their initial values (none change without gas)."""
+    worst = 0.0
+    for name, value in expected.items():
+        path = os.path.join(case, time, "lagrangian", CLOUD, name)
+        worst = max(worst, float(np.abs(foam.read_list(path) - value).max()))
+    return worst
 
 
 def bed_surface(z, alpha):
@@ -154,6 +166,11 @@ def check(case, end="0.6"):
                  and account_lost(case) == 0,
                  f"{s['parcels0']} at 0, {s['parcelsLast']} at {s['lastTime']},"
                  f" lost {account_lost(case):g}")
+    props = {"T": 300, "Cp": 840, "specularFraction": 0, "thermalAccommodation": 1}
+    dev = carried(case, s["lastTime"], props)
+    ok &= report("parcel properties carried", dev == 0,
+                 f"T, Cp, specularFraction, thermalAccommodation at"
+                 f" {s['lastTime']} s: largest change {dev:g}")
     amax = max(s["alphaMaxCell"].values())
     ok &= report("cell alpha bound", amax <= ALPHA_MAX_BOUND,
                  f"max cell alpha {amax:.3f} <= {ALPHA_MAX_BOUND}")

@@ -92,18 +92,7 @@ const Foam::word& Foam::SolidCloud<CloudType>::checkInput
     typedef typename CloudType::MPPICCloudType mppicType;
     typedef typename CloudType::kinematicCloudType kinematicType;
 
-    const IOdictionary props
-    (
-        IOobject
-        (
-            cloudName + "Properties",
-            mesh.time().constant(),
-            mesh,
-            IOobject::MUST_READ,
-            IOobject::NO_WRITE,
-            false
-        )
-    );
+    const IOdictionary props(readCloudProperties(cloudName, mesh));
 
     const dictionary& solution = props.subDict("solution");
     modelName<AveragingMethod<scalar>>(solution, "averagingMethod");
@@ -158,15 +147,17 @@ const Foam::word& Foam::SolidCloud<CloudType>::checkInput
     );
     if (walls == "localInteraction")
     {
-        const PtrList<entry> patches
-        (
-            models.subDict("localInteractionCoeffs").lookup("patches")
-        );
+        const dictionary& coeffs = models.subDict("localInteractionCoeffs");
+        const PtrList<entry> patches(coeffs.lookup("patches"));
         for (const entry& e : patches)
         {
             if (e.isDict())
             {
-                checkRebound(e.dict());
+                // Named after the file, for the message
+                dictionary patchDict(e.dict());
+                patchDict.name() =
+                    coeffs.name() + ".patches." + e.keyword();
+                checkRebound(patchDict);
             }
         }
     }

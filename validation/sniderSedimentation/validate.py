@@ -1,0 +1,115 @@
+"""Snider sedimentation validation (SPEC.md 7.1, issue 3).
+
+    /usr/bin/python3 validate.py [--full] [--build DIR]
+
+Runs the tutorials/solids/sniderSedimentation set-up three times:
+  serial    e = 0.85 to 0.6 s, one rank,
+  parallel  e = 0.85 to 0.6 s, 2 METIS ranks (decomposePar/reconstructPar),
+  e05       e = 0.5 (walls and collision time scale) to 0.2 s, one rank,
+then applies the checks of rmf.snider (tolerances and their origin are
+stated there) and draws sniderSedimentation.png: alpha(z) at 0.1, 0.15,
+0.2 and 0.6 s for the serial and the parallel run, and e = 0.85 against
+e = 0.5 at 0.2 s.
+
+Reduced (default, in ./Alltest): 4 times fewer parcels of 4 times the
+weight (same alpha0); --full: the tutorial as it is (162 232 parcels).
+The two single-rank runs go side by side on the machine's 2 cores, then
+the parallel one.
+"""
+
+import argparse
+import concurrent.futures
+import os
+import sys
+import time
+
+from rmf import foam, snider
+
+TUTORIAL = os.path.join(foam.PROJECT_DIR, "tutorials", "solids", "sniderSedimentation")
+BUILD = os.path.join(foam.PROJECT_DIR, "build", "validation", "sniderSedimentation")
+INIT = "system/grainsInitialiseDict"
+PROPS = "constant/grainsProperties"
+FULL_PARCELS, FULL_WEIGHT = 162232, 749
+REDUCTION = 4
+
+
+def prepare(build, name, scale, end, e=None):
+    case = foam.copy_setup(TUTORIAL, os.path.join(build, name))
+    os.makedirs(os.path.join(case, "0"), exist_ok=True)
+    foam.set_entry(case, INIT, "regions/column/nParcels", round(FULL_PARCELS/scale))
+    foam.set_entry(case, INIT, "regions/column/nParticle", FULL_WEIGHT*scale)
+    foam.set_entry(case, "system/controlDict", "endTime", end)
+    if e is not None:
+        for patch in ("sides", "bottom", "top"):
+            foam.set_entry(case, PROPS, f"subModels/localInteractionCoeffs/patches/{patch}/e", e)
+        foam.set_entry(case, PROPS, "subModels/stochasticCoeffs/timeScaleModel/e", e)
+    foam.run(case, "blockMesh")
+    foam.run(case, "rarefiedMultiphaseInitialise")
+    return case
+
+
+def solve(case, np_=1):
+    """Run the solver; returns the wall time in seconds."""
+    start = time.time()
+    if np_ > 1:
+        foam.run(case, "decomposePar")
+        foam.run(case, "rarefiedMultiphaseFoam", np_=np_)
+        foam.run(case, "reconstructPar")
+    else:
+        foam.run(case, "rarefiedMultiphaseFoam")
+    return time.time() - start
+
+
+def validate(full=False, build=BUILD):
+    """All runs and checks; returns (all passed, figures)."""
+    scale = 1 if full else REDUCTION
+    build = os.path.join(build, "full" if full else "reduced")
+
+    def serial_run(name, end, e=None):
+        case = prepare(build, name, scale, end, e)
+        return case, solve(case)
+
+    with concurrent.futures.ThreadPoolExecutor(2) as pool:
+        serial_job = pool.submit(serial_run, "serial", 0.6)
+        e05_job = pool.submit(serial_run, "e05", 0.2, 0.5)
+        serial, t_serial = serial_job.result()
+        e05, t_e05 = e05_job.result()
+
+    parallel = prepare(build, "parallel", scale, 0.6)
+    t_parallel = solve(parallel, np_=2)
+
+    print(f"Parcels {round(FULL_PARCELS/scale)} x {FULL_WEIGHT*scale}; wall time:"
+          f" serial {t_serial:.0f} s, 2 ranks {t_parallel:.0f} s,"
+          f" e = 0.5 to 0.2 s {t_e05:.0f} s")
+
+    ok_s, s = snider.check(serial)
+    ok_p, p = snider.check(parallel)
+    ok_e, e = snider.check(e05, end="0.2")
+    ok_c = snider.compare(s, p)
+    ok_w, w05, w085 = snider.sharper(e, s)
+
+    png = os.path.join(build, "sniderSedimentation.png")
+    snider.plot({"serial, e = 0.85": s, "2 METIS ranks, e = 0.85": p}, png,
+                title=f"Snider sedimentation, {round(FULL_PARCELS/scale)} parcels")
+    compare_png = os.path.join(build, "sniderRestitution.png")
+    snider.plot({"e = 0.85": {"z": s["z"], "profiles": {"0.2": s["profiles"]["0.2"]}},
+                 "e = 0.5": {"z": e["z"], "profiles": {"0.2": e["profiles"]["0.2"]}}},
+                compare_png, times=("0.2",), title="bed surface at 0.2 s")
+
+    ok = ok_s and ok_p and ok_e and ok_c and ok_w
+    print("PASS" if ok else "FAIL")
+    return ok, {"serial": s, "parallel": p, "e05": e, "widths": (w05, w085),
+                "seconds": (t_serial, t_parallel, t_e05), "pngs": (png, compare_png)}
+
+
+def main(argv=None):
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--full", action="store_true")
+    parser.add_argument("--build", default=BUILD)
+    args = parser.parse_args(argv)
+    ok, _ = validate(args.full, args.build)
+    return 0 if ok else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,107 @@
+"""Bad solid-phase input (issue 3, item 8) stops the initialiser and the
+solver with a FatalIOError naming the file, the keyword, the bad value and
+the valid range or choices (end to end, on a copy of the Snider tutorial's
+set-up, with a small parcel count so that the good case starts at once)."""
+
+import os
+import subprocess
+
+import pytest
+
+from rmf import foam
+
+TUTORIAL = os.path.join(foam.PROJECT_DIR, "tutorials", "solids", "sniderSedimentation")
+BUILD = os.path.join(foam.PROJECT_DIR, "build", "validation", "solidInputErrors")
+PROPS = "constant/grainsProperties"
+INIT = "system/grainsInitialiseDict"
+REGION = "regions/column/"
+BOTH = ["rarefiedMultiphaseInitialise", "rarefiedMultiphaseFoam"]
+
+
+@pytest.fixture(scope="module")
+def meshed():
+    case = foam.copy_setup(TUTORIAL, os.path.join(BUILD, "meshed"))
+    os.makedirs(os.path.join(case, "0"), exist_ok=True)
+    foam.set_entry(case, INIT, REGION + "nParcels", 2000)
+    foam.run(case, "blockMesh")
+    foam.run(case, "rarefiedMultiphaseInitialise")
+    return case
+
+
+def with_entry(meshed, name, dict_path, entry, value, remove=None):
+    case = foam.copy_case(meshed, os.path.join(BUILD, name))
+    if "/patches/" in entry:
+        # A list entry, which foamDictionary cannot address: edit the text
+        # of the first patch's line
+        path = os.path.join(case, dict_path)
+        with open(path) as f:
+            text = f.read()
+        keyword = entry.split("/")[-1]
+        old = next(line for line in text.splitlines()
+                   if line.split() and line.split()[0] == keyword
+                   and text.index(line) > text.index("patches"))
+        with open(path, "w") as f:
+            f.write(text.replace(old, f"{keyword} {value};", 1))
+    else:
+        foam.set_entry(case, dict_path, entry, value)
+    if remove:
+        subprocess.run(["foamDictionary", "-entry", remove, "-remove", dict_path],
+                       cwd=case, check=True, stdout=subprocess.DEVNULL)
+    return case
+
+
+def expect(out, *texts):
+    for text in ("FOAM FATAL IO ERROR",) + texts:
+        assert text in out, text
+
+
+# Cloud dictionary: both programs check it before anything is read.
+# (entry, bad value, texts of the message beyond file, keyword and value)
+CLOUD_CASES = [
+    ("alphaPacked", "subModels/implicitCoeffs/particleStressModel/alphaPacked",
+     "1", "(0, 1)"),
+    ("pSolid", "subModels/implicitCoeffs/particleStressModel/pSolid", "0", "(0, inf)"),
+    ("wallRestitution", "subModels/localInteractionCoeffs/patches/sides/e", "1.2",
+     "[0, 1]"),
+    ("collisionRestitution", "subModels/stochasticCoeffs/timeScaleModel/e", "-0.1",
+     "[0, 1]"),
+    ("density", "constantProperties/rho0", "-2500", "(0, inf)"),
+    ("packingModel", "subModels/packingModel", "implicitX", "explicit"),
+    ("stressModel", "subModels/implicitCoeffs/particleStressModel/type", "Harris",
+     "HarrisCrighton"),
+    ("averaging", "solution/averagingMethod", "triple", "dual"),
+]
+
+
+@pytest.mark.parametrize("app", BOTH)
+@pytest.mark.parametrize("name, entry, value, valid", CLOUD_CASES,
+                         ids=[c[0] for c in CLOUD_CASES])
+def test_bad_cloud_entry(meshed, app, name, entry, value, valid):
+    case = with_entry(meshed, name, PROPS, entry, value)
+    keyword = entry.split("/")[-1]
+    out = foam.run_failing(case, app)
+    expect(out, PROPS, keyword, value.lstrip("-") if keyword == "type" else value, valid)
+
+
+# Initialisation dictionary (initialiser only)
+INIT_CASES = [
+    ("alpha0High", "alpha0", "0.6", "(0, alphaPacked = 0.6)", "nParcels"),
+    ("alpha0Zero", "alpha0", "0", "(0, alphaPacked = 0.6)", "nParcels"),
+    ("diameter", "d", "-0.0003", "(0, inf)", None),
+    ("weight", "nParticle", "-749", "(0, inf)", None),
+]
+
+
+@pytest.mark.parametrize("name, entry, value, valid, remove", INIT_CASES,
+                         ids=[c[0] for c in INIT_CASES])
+def test_bad_initialisation(meshed, name, entry, value, valid, remove):
+    case = with_entry(meshed, name, INIT, REGION + entry, value,
+                      remove=REGION + remove if remove else None)
+    out = foam.run_failing(case, "rarefiedMultiphaseInitialise")
+    expect(out, INIT, entry, value, valid)
+
+
+def test_region_outside_mesh(meshed):
+    case = with_entry(meshed, "outside", INIT, REGION + "max", "(0.2 0.138 0.3)")
+    out = foam.run_failing(case, "rarefiedMultiphaseInitialise")
+    expect(out, INIT, "positions outside the mesh")
