@@ -58,16 +58,16 @@ def expect(out, *texts):
 # Cloud dictionary: both programs check it before anything is read.
 # (entry, bad value, texts of the message beyond file, keyword and value)
 CLOUD_CASES = [
-    ("alphaPacked", "subModels/implicitCoeffs/particleStressModel/alphaPacked",
+    ("alphaPacked", "subModels/explicitCoeffs/particleStressModel/alphaPacked",
      "1", "(0, 1)"),
-    ("pSolid", "subModels/implicitCoeffs/particleStressModel/pSolid", "0", "(0, inf)"),
+    ("pSolid", "subModels/explicitCoeffs/particleStressModel/pSolid", "0", "(0, inf)"),
     ("wallRestitution", "subModels/localInteractionCoeffs/patches/sides/e", "1.2",
      "[0, 1]"),
     ("collisionRestitution", "subModels/stochasticCoeffs/timeScaleModel/e", "-0.1",
      "[0, 1]"),
     ("density", "constantProperties/rho0", "-2500", "(0, inf)"),
-    ("packingModel", "subModels/packingModel", "implicitX", "explicit"),
-    ("stressModel", "subModels/implicitCoeffs/particleStressModel/type", "Harris",
+    ("packingModel", "subModels/packingModel", "explicitX", "implicit"),
+    ("stressModel", "subModels/explicitCoeffs/particleStressModel/type", "Harris",
      "HarrisCrighton"),
     ("averaging", "solution/averagingMethod", "triple", "dual"),
 ]
