@@ -72,17 +72,23 @@ def read_field(path, ncells=None):
     raise ValueError(f"{path}: no internalField found")
 
 
-def latest_time(case):
-    """Name of the latest time directory of a case (not 0)."""
-    times = []
+def times(case):
+    """Names of a case's time directories, in time order."""
+    found = []
     for name in os.listdir(case):
         try:
-            times.append((float(name), name))
+            found.append((float(name), name))
         except ValueError:
             pass
-    if not times:
+    return [name for _, name in sorted(found)]
+
+
+def latest_time(case):
+    """Name of the latest time directory of a case."""
+    found = times(case)
+    if not found:
         raise FileNotFoundError(f"{case}: no time directories")
-    return max(times)[1]
+    return found[-1]
 
 
 def run(case, *args, log=None, np_=1):

@@ -43,7 +43,6 @@ Tolerances and where they come from:
 """
 
 import argparse
-import glob
 import json
 import os
 import sys
@@ -124,26 +123,12 @@ def surface_width(z, alpha):
     return float(through(clear[0] - 1, CLEAR_ALPHA) - through(top, 0.9*ALPHA_PACKED))
 
 
-def times_of(case):
-    """Written times of the case (reconstructed), as their names."""
-    names = [os.path.basename(p) for p in glob.glob(os.path.join(case, "[0-9]*"))]
-    return sorted((n for n in names if _is_number(n)), key=float)
-
-
-def _is_number(text):
-    try:
-        float(text)
-        return True
-    except ValueError:
-        return False
-
-
 def summary(case, times=TIMES):
     """Profiles and figures of a run, as a dict (also for JSON)."""
     heights, index = layers(case)
     out = {"z": heights.tolist(), "profiles": {}, "alphaMaxCell": {},
            "alphaMaxLayer": {}}
-    all_times = [t for t in times_of(case) if float(t) > 0]
+    all_times = [t for t in foam.times(case) if float(t) > 0]
     for t in all_times:
         prof, amax = profile(case, t, heights, index)
         out["alphaMaxCell"][t] = amax
