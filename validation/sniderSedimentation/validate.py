@@ -37,7 +37,6 @@ REDUCTION = 4
 
 def prepare(build, name, scale, end, e=None):
     case = foam.copy_setup(TUTORIAL, os.path.join(build, name))
-    os.makedirs(os.path.join(case, "0"), exist_ok=True)
     foam.set_entry(case, INIT, "regions/column/nParcels", round(FULL_PARCELS/scale))
     foam.set_entry(case, INIT, "regions/column/nParticle", FULL_WEIGHT*scale)
     foam.set_entry(case, "system/controlDict", "endTime", end)

@@ -21,7 +21,6 @@ BOTH = ["rarefiedMultiphaseInitialise", "rarefiedMultiphaseFoam"]
 @pytest.fixture(scope="module")
 def meshed():
     case = foam.copy_setup(TUTORIAL, os.path.join(BUILD, "meshed"))
-    os.makedirs(os.path.join(case, "0"), exist_ok=True)
     foam.set_entry(case, INIT, REGION + "nParcels", 2000)
     foam.run(case, "blockMesh")
     foam.run(case, "rarefiedMultiphaseInitialise")

@@ -33,7 +33,6 @@ def parcel(case, time, name):
 
 def test_restart_keeps_parcel_state():
     case = foam.copy_setup(TUTORIAL, BUILD)
-    os.makedirs(os.path.join(case, "0"), exist_ok=True)
     foam.set_entry(case, INIT, "regions/column/nParcels", N)
     foam.set_entry(case, INIT, "regions/column/T0", 350)
     for model in ("packingModel", "dampingModel", "isotropyModel"):
@@ -64,7 +63,6 @@ def test_zonal_gravity():
     """zonalGravity: parcels inside the cellZone (upper half of the column)
     stay at rest; the others fall at U_z = -g t exactly (3 steps)."""
     case = foam.copy_setup(TUTORIAL, BUILD + "Zonal")
-    os.makedirs(os.path.join(case, "0"), exist_ok=True)
     foam.set_entry(case, INIT, "regions/column/nParcels", N)
     for model in ("packingModel", "dampingModel", "isotropyModel"):
         foam.set_entry(case, PROPS, "subModels/" + model, "none")

@@ -163,6 +163,11 @@ def copy_setup(src, dst):
     products = shutil.ignore_patterns("polyMesh", "lagrangian", "uniform",
                                       "*SigmaTcRMax", "V", "C", "C?")
     for sub in ("0", "constant", "system"):
+        if not os.path.isdir(os.path.join(src, sub)):
+            # git keeps no empty directory: a case with no initial fields
+            # has no 0/ in a fresh clone (its Allrun makes one)
+            os.makedirs(os.path.join(dst, sub))
+            continue
         shutil.copytree(os.path.join(src, sub), os.path.join(dst, sub),
                         ignore=products)
     return dst
