@@ -10,6 +10,7 @@
 #include "IsotropyModel.H"
 #include "PatchInteractionModel.H"
 #include "StochasticCollisionModel.H"
+#include "NTCHardSphere.H"
 #include "ParticleStressModel.H"
 #include "TimeScaleModel.H"
 #include "AveragingMethod.H"
@@ -133,10 +134,17 @@ const Foam::word& Foam::SolidCloud<CloudType>::checkInput
         checkTimeScale(models.subDict(isotropy + "Coeffs"));
     }
 
-    modelName<StochasticCollisionModel<kinematicType>>
+    const word collisions
     (
-        models, "stochasticCollisionModel"
+        modelName<StochasticCollisionModel<kinematicType>>
+        (
+            models, "stochasticCollisionModel"
+        )
     );
+    if (collisions == NTCHardSphere<kinematicType>::typeName)
+    {
+        NTCHardSphere<kinematicType>::checkCoeffs(models);
+    }
 
     const word walls
     (

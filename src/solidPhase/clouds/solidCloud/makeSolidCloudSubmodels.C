@@ -3,7 +3,8 @@
 
 Description
     Registers, for solidCloud, upstream's kinematic and MPPIC submodels (as
-    MPPICFoam's cloud has them) and our own: the zonalGravity force.
+    MPPICFoam's cloud has them) and our own: the zonalGravity force and the
+    NTCHardSphere stochastic collision model.
 
 \*---------------------------------------------------------------------------*/
 
@@ -26,6 +27,7 @@ Description
 
 // Ours
 #include "ZonalGravityForce.H"
+#include "NTCHardSphere.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -43,6 +45,7 @@ makeMPPICParcelIsotropyModels(solidCloud);
 makeMPPICParcelPackingModels(solidCloud);
 
 makeParticleForceModelType(ZonalGravityForce, solidCloud);
+makeStochasticCollisionModelType(NTCHardSphere, solidCloud);
 
 
 // ************************************************************************* //

@@ -1,0 +1,415 @@
+/*---------------------------------------------------------------------------*\
+  rarefiedMultiphaseFoam
+\*---------------------------------------------------------------------------*/
+
+#include "NTCHardSphere.H"
+#include "inputChecks.H"
+#include "volFields.H"
+#include "zeroGradientFvPatchFields.H"
+#include "mathematicalConstants.H"
+
+// * * * * * * * * * * * * * * * Input checks  * * * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace NTCHardSphereChecks
+{
+
+//- Read an optional volume fraction threshold and check 0 < value <= 1
+inline scalar getFraction
+(
+    const dictionary& dict,
+    const word& keyword,
+    const scalar deflt
+)
+{
+    const scalar value = dict.getOrDefault<scalar>(keyword, deflt);
+
+    if (!(value > 0 && value <= 1))
+    {
+        inputChecks::outOfRange(dict, keyword, value, "(0, 1]");
+    }
+
+    return value;
+}
+
+} // End namespace NTCHardSphereChecks
+} // End namespace Foam
+
+
+template<class CloudType>
+void Foam::NTCHardSphere<CloudType>::checkCoeffs(const dictionary& subModels)
+{
+    using namespace NTCHardSphereChecks;
+
+    const dictionary& coeffs = subModels.subDict(typeName + "Coeffs");
+
+    inputChecks::getClosed(coeffs, "e", 0, 1);
+    getFraction(coeffs, "alphaValid", 0.1);
+    if (coeffs.found("alphaSwitch"))
+    {
+        getFraction(coeffs, "alphaSwitch", 1);
+    }
+    inputChecks::getLabelOrDefault(coeffs, "randomSeed", 0, 0, 2000);
+}
+
+
+// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
+
+template<class CloudType>
+Foam::word Foam::NTCHardSphere<CloudType>::fieldName(const word& name) const
+{
+    return name + "." + this->owner().name();
+}
+
+
+template<class CloudType>
+Foam::scalar Foam::NTCHardSphere<CloudType>::sigmaCrBound
+(
+    const DynamicList<parcelType*>& parcels
+)
+{
+    // |v_p - v_q| <= |v_p - <v>| + |v_q - <v>| <= 2 max|v - <v>| and
+    // pi (R_p + R_q)^2 <= pi d_max^2
+    vector mean(Zero);
+    scalar dMax = 0;
+    for (const parcelType* p : parcels)
+    {
+        mean += p->U();
+        dMax = max(dMax, p->d());
+    }
+    mean /= parcels.size();
+
+    scalar devMax = 0;
+    for (const parcelType* p : parcels)
+    {
+        devMax = max(devMax, mag(p->U() - mean));
+    }
+
+    return constant::mathematical::pi*sqr(dMax)*2*devMax;
+}
+
+
+template<class CloudType>
+Foam::label Foam::NTCHardSphere<CloudType>::collideCell
+(
+    const label celli,
+    const DynamicList<parcelType*>& parcels,
+    const scalar dt,
+    label& nAccepted
+)
+{
+    using constant::mathematical::pi;
+    using constant::mathematical::twoPi;
+
+    const label N = parcels.size();
+
+    scalar& sigmaCrMax = sigmaCrMax_[celli];
+    if (sigmaCrMax <= 0)
+    {
+        sigmaCrMax = sigmaCrBound(parcels);
+    }
+
+    scalar WMax = 0;
+    for (const parcelType* p : parcels)
+    {
+        WMax = max(WMax, p->nParticle());
+    }
+
+    const scalar candidates =
+        WMax*N*(N - 1)*sigmaCrMax*dt/(2*this->owner().mesh().V()[celli])
+      + remainder_[celli];
+
+    const label nPairs = label(candidates);
+    remainder_[celli] = candidates - nPairs;
+
+    for (label pairi = 0; pairi < nPairs; ++pairi)
+    {
+        // Two distinct parcels, uniformly
+        const label i = rnd_.position<label>(0, N - 1);
+        label j = rnd_.position<label>(0, N - 2);
+        if (j >= i)
+        {
+            ++j;
+        }
+        parcelType& p = *parcels[i];
+        parcelType& q = *parcels[j];
+
+        const scalar cr = mag(p.U() - q.U());
+        const scalar sigmaCr = pi*sqr(0.5*(p.d() + q.d()))*cr;
+
+        if (sigmaCr > sigmaCrMax)
+        {
+            sigmaCrMax = sigmaCr;
+        }
+
+        if (sigmaCr <= rnd_.sample01<scalar>()*sigmaCrMax)
+        {
+            continue;
+        }
+
+        ++nAccepted;
+
+        const scalar mp = p.mass();
+        const scalar mq = q.mass();
+        const scalar M = mp + mq;
+        const vector Um((mp*p.U() + mq*q.U())/M);
+
+        // Isotropic unit vector
+        const scalar cosTheta = 2*rnd_.sample01<scalar>() - 1;
+        const scalar sinTheta = sqrt(max(1 - sqr(cosTheta), scalar(0)));
+        const scalar phi = twoPi*rnd_.sample01<scalar>();
+        const vector n(sinTheta*cos(phi), sinTheta*sin(phi), cosTheta);
+
+        // |v_p - v_m| = m_q c_r/M, |v_q - v_m| = m_p c_r/M
+        const scalar crPost = e_*cr;
+
+        // Energy lost per real pair, split by mass
+        const scalar dEbyM = (1 - sqr(e_))*0.5*(mp*mq/M)*sqr(cr)/M;
+
+        // Unequal weights: each parcel takes the collision with the
+        // probability that its particles meet the other's (see Description)
+        const scalar Wp = p.nParticle();
+        const scalar Wq = q.nParticle();
+        const bool updateP =
+            Wq >= WMax || rnd_.sample01<scalar>()*WMax < Wq;
+        const bool updateQ =
+            Wp >= WMax || rnd_.sample01<scalar>()*WMax < Wp;
+
+        if (updateP)
+        {
+            p.U() = Um + (crPost*mq/M)*n;
+            p.T() += dEbyM/p.Cp();
+        }
+        if (updateQ)
+        {
+            q.U() = Um - (crPost*mp/M)*n;
+            q.T() += dEbyM/q.Cp();
+        }
+    }
+
+    return nPairs;
+}
+
+
+template<class CloudType>
+void Foam::NTCHardSphere<CloudType>::writeFields(const scalarField& alpha)
+{
+    const fvMesh& mesh = this->owner().mesh();
+
+    const auto write = [&](const word& name, const dimensionSet& dims,
+        const scalarField& values)
+    {
+        volScalarField field
+        (
+            IOobject
+            (
+                fieldName(name),
+                mesh.time().timeName(),
+                mesh,
+                IOobject::NO_READ,
+                IOobject::NO_WRITE,
+                false
+            ),
+            mesh,
+            dimensionedScalar(dims, Zero),
+            zeroGradientFvPatchScalarField::typeName
+        );
+        field.primitiveFieldRef() = values;
+        field.correctBoundaryConditions();
+        field.write();
+    };
+
+    write("sigmaCrMax", dimVolume/dimTime, sigmaCrMax_);
+    write("nCandidates", dimless, nCandidates_);
+    write("nCollisions", dimless, nCollisions_);
+
+    nCandidates_ = 0;
+    nCollisions_ = 0;
+
+    // Validity of binary collisions
+    label nAbove = 0;
+    label nAboveColliding = 0;
+    forAll(alpha, celli)
+    {
+        if (alpha[celli] > alphaValid_)
+        {
+            ++nAbove;
+            if (alpha[celli] < alphaSwitch_)
+            {
+                ++nAboveColliding;
+            }
+        }
+    }
+    reduce(nAbove, sumOp<label>());
+    reduce(nAboveColliding, sumOp<label>());
+
+    Info<< "    " << typeName << ": " << nAbove << " of "
+        << returnReduce(alpha.size(), sumOp<label>())
+        << " cells above alphaValid = " << alphaValid_
+        << " (binary collisions not valid there), " << nAboveColliding
+        << " of them colliding" << nl;
+}
+
+
+// * * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * //
+
+template<class CloudType>
+void Foam::NTCHardSphere<CloudType>::collide
+(
+    typename parcelType::trackingData&,
+    const scalar dt
+)
+{
+    const fvMesh& mesh = this->owner().mesh();
+    const scalarField& V = mesh.V();
+    const label nCells = mesh.nCells();
+
+    if (sigmaCrMax_.size() != nCells)
+    {
+        sigmaCrMax_.setSize(nCells, Zero);
+        remainder_.setSize(nCells, Zero);
+        nCandidates_.setSize(nCells, Zero);
+        nCollisions_.setSize(nCells, Zero);
+    }
+
+    // The parcels of each cell and the cell's solid volume fraction
+    List<DynamicList<parcelType*>> cellParcels(nCells);
+    scalarField alpha(nCells, Zero);
+    for (parcelType& p : this->owner())
+    {
+        cellParcels[p.cell()].append(&p);
+        alpha[p.cell()] += p.nParticle()*p.volume();
+    }
+    alpha /= V;
+
+    label nCand = 0;
+    label nAccepted = 0;
+    label nColliding = 0;
+    label nDense = 0;
+
+    forAll(cellParcels, celli)
+    {
+        const DynamicList<parcelType*>& parcels = cellParcels[celli];
+
+        if (alpha[celli] >= alphaSwitch_)
+        {
+            nDense += parcels.size();
+            continue;
+        }
+
+        nColliding += parcels.size();
+
+        if (parcels.size() < 2)
+        {
+            continue;
+        }
+
+        label accepted = 0;
+        const label cand = collideCell(celli, parcels, dt, accepted);
+        nCandidates_[celli] += cand;
+        nCollisions_[celli] += accepted;
+        nCand += cand;
+        nAccepted += accepted;
+    }
+
+    reduce(nCand, sumOp<label>());
+    reduce(nAccepted, sumOp<label>());
+
+    Info<< "    NTC candidate pairs             = " << nCand << nl
+        << "    NTC collisions                  = " << nAccepted << nl;
+
+    if (alphaSwitch_ < GREAT)
+    {
+        reduce(nColliding, sumOp<label>());
+        reduce(nDense, sumOp<label>());
+        const scalar n = max(nColliding + nDense, 1);
+        Info<< "    Parcel fraction NTC / MPPIC only = "
+            << nColliding/n << " / " << nDense/n << nl;
+    }
+
+    if (mesh.time().writeTime())
+    {
+        writeFields(alpha);
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+template<class CloudType>
+Foam::NTCHardSphere<CloudType>::NTCHardSphere
+(
+    const dictionary& dict,
+    CloudType& owner
+)
+:
+    StochasticCollisionModel<CloudType>(dict, owner, typeName),
+    e_(this->coeffDict().template get<scalar>("e")),
+    alphaValid_
+    (
+        this->coeffDict().template getOrDefault<scalar>("alphaValid", 0.1)
+    ),
+    alphaSwitch_
+    (
+        this->coeffDict().template getOrDefault<scalar>("alphaSwitch", GREAT)
+    ),
+    rnd_
+    (
+        this->coeffDict().template getOrDefault<label>("randomSeed", 0)
+       *1000003 + 300001 + Pstream::myProcNo()
+    ),
+    sigmaCrMax_(owner.mesh().nCells(), Zero),
+    remainder_(owner.mesh().nCells(), Zero),
+    nCandidates_(owner.mesh().nCells(), Zero),
+    nCollisions_(owner.mesh().nCells(), Zero)
+{
+    checkCoeffs(dict);
+
+    // (sigma c_r)_max of a restart
+    const fvMesh& mesh = owner.mesh();
+    IOobject io
+    (
+        fieldName("sigmaCrMax"),
+        mesh.time().timeName(),
+        mesh,
+        IOobject::MUST_READ,
+        IOobject::NO_WRITE,
+        false
+    );
+    if (io.typeHeaderOk<volScalarField>(true))
+    {
+        sigmaCrMax_ = volScalarField(io, mesh).primitiveField();
+        Info<< "    " << typeName << ": read " << io.name() << nl;
+    }
+
+    Info<< "    " << typeName << ": e = " << e_ << ", alphaValid = "
+        << alphaValid_;
+    if (alphaSwitch_ < GREAT)
+    {
+        Info<< ", hybrid: NTC below alphaSwitch = " << alphaSwitch_
+            << ", MPPIC only above";
+    }
+    Info<< nl;
+}
+
+
+template<class CloudType>
+Foam::NTCHardSphere<CloudType>::NTCHardSphere
+(
+    const NTCHardSphere<CloudType>& cm
+)
+:
+    StochasticCollisionModel<CloudType>(cm),
+    e_(cm.e_),
+    alphaValid_(cm.alphaValid_),
+    alphaSwitch_(cm.alphaSwitch_),
+    rnd_(cm.rnd_),
+    sigmaCrMax_(cm.sigmaCrMax_),
+    remainder_(cm.remainder_),
+    nCandidates_(cm.nCandidates_),
+    nCollisions_(cm.nCollisions_)
+{}
+
+
+// ************************************************************************* //
