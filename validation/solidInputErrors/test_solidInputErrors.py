@@ -88,6 +88,7 @@ INIT_CASES = [
     ("alpha0Zero", "alpha0", "0", "(0, alphaPacked = 0.6)", "nParcels"),
     ("diameter", "d", "-0.0003", "(0, inf)", None),
     ("weight", "nParticle", "-749", "(0, inf)", None),
+    ("spread", "sigmaU", "-0.5", "[0, inf)", None),
 ]
 
 
