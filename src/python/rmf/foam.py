@@ -217,13 +217,17 @@ def read_patch_field(path, patch):
     return _values(v.group(3), v.group(1) == b"vector")
 
 
+_LOG_SEPARATORS = str.maketrans("/()", "   ")
+
+
 def log_values(log, label):
-    """Numbers after 'label =' on each matching line of a solver log."""
+    """Numbers after 'label =' on each matching line of a solver log
+    (separated by blanks or '/'; a vector's brackets are dropped)."""
     pattern = re.compile(r"^\s*" + re.escape(label) + r"\s*=\s*(.*)$")
     rows = []
     with open(log) as f:
         for line in f:
             m = pattern.match(line)
             if m:
-                rows.append([float(x) for x in m.group(1).replace("/", " ").split()])
+                rows.append([float(x) for x in m.group(1).translate(_LOG_SEPARATORS).split()])
     return np.array(rows)

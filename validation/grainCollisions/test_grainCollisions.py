@@ -1,0 +1,340 @@
+"""NTC hard-sphere grain collisions (issue 4): kinetic-theory verification
+of the NTCHardSphere stochastic collision model, end to end on the solver.
+
+Case (granularGas/): a fully periodic (cyclic) cube of 0.1 m, 4 x 4 x 4
+cells, no gravity, every MPPIC model off; N = 20000 parcels of W = 1 glass
+grain (d = 1 mm, m = rho pi d^3/6), placed uniformly, velocities
+Maxwellian with per-component variance theta = sigmaU^2 = 1 m^2/s^2
+(initialiser's sigmaU).  Real number density n = W N / V = 2e7 m^-3,
+alpha = 0.0105; dt = 0.5 ms, so each particle collides with probability
+~0.07 per step.  Fixed seeds (initialiser randomSeed 1, collision model
+randomSeed 1): every run repeats exactly.
+
+Kinetic theory (equal spheres, sigma = pi (R_p + R_q)^2 = pi d^2; a
+Maxwellian of per-component variance theta, whose relative velocity c_r is
+Maxwellian of variance 2 theta: <c_r> = 4 sqrt(theta/pi),
+<c_r^3> = 32 theta^(3/2)/sqrt(pi))
+
+1. Collision rate (e = 1).  Each particle collides at nu = n sigma <c_r>;
+   a collision event involves two parcels, so the events per step in the
+   whole box are N nu dt / 2 and the measured rate per parcel is
+   2 C / (N t) for C events in time t.  Noise: C is a sum of Bernoulli
+   acceptances, variance <= C (Poisson): relative sd 1/sqrt(C).  The NTC
+   count W N (N-1) .../(2V) equals the kinetic rate for the mean over
+   cells because <N (N-1)> = <N>^2 for Poisson occupancy; here the
+   occupancy is multinomial (fixed total), which lowers <N (N-1)> by
+   <N>/64 of <N>^2 ~ 1e5: 3e-5, negligible.
+
+2. Homogeneous cooling (Haff's law) for THIS model.  A collision keeps the
+   centre-of-mass velocity and scales the relative speed by e in an
+   isotropic direction, so it removes (1 - e^2) mu c_r^2/2 =
+   (1 - e^2)(m/4) c_r^2 (equal masses, mu = m/2) whatever the geometry.
+   Collisions per volume and time at relative speed c_r: n^2 sigma c_r
+   f(c_r)/2.  With E = (3/2) n m theta per volume:
+
+       dE/dt = -(n^2 sigma/2) (1 - e^2) (m/4) <c_r^3>
+             = -4 (1 - e^2) n^2 sigma m theta^(3/2) / sqrt(pi)
+       dtheta/dt = -(8/(3 sqrt(pi))) (1 - e^2) n sigma theta^(3/2)
+
+   whose solution is theta(t) = theta_0/(1 + t/tau)^2 with
+
+       tau = 3 sqrt(pi) / (4 (1 - e^2) n sigma sqrt(theta_0)).
+
+   (Classical inelastic hard spheres lose only the normal part,
+   (1 - e^2)(m/4)(c_r.k)^2, whose collision-weighted mean over impact
+   geometry is half as large: their tau is twice this one.)  The
+   velocity distribution is assumed to stay Maxwellian (the homogeneous
+   cooling state's small departure is not modelled).  theta(t) is read
+   every step from the log (kinetic energy, momentum, mass of the cloud:
+   theta = (2 KE/M - |P/M|^2)/3); 1/sqrt(theta) = (1 + t/tau)/sqrt(theta_0)
+   is fitted by least squares through the exact 1/sqrt(theta_0) of the
+   initial parcels, giving tau.  Noise: the cooling is set by the energy
+   dissipated in C collisions, each removing ~c_r^2 drawn with weight c_r:
+   relative sd sqrt(<c_r^5><c_r>/<c_r^3>^2 / C) = sqrt(1.5/C); five seeds
+   of each run scattered by 0.45 % (sd), a little more, so the tolerance
+   is 4 x max(sqrt(1.5/C), 0.0045).
+
+3. Energy bookkeeping: with equal weights every collision turns exactly
+   the kinetic energy it removes into heat of the two grains, so
+   KE(0) - KE(t) = sum W m c_p (T(t) - T(0)) to round-off (parcel data
+   written with 17 digits).  Momentum: each collision conserves the
+   pair's, and without forces nothing else changes U: the total is
+   conserved to round-off.
+
+4. Relaxation to a Maxwellian (e = 1): two opposing streams U0 = (+-1 0 0)
+   m/s, each with a small Maxwellian spread sigmaU = 0.3 m/s, start with
+   x-velocity kurtosis ~1.3 (two peaks) and unequal component variances;
+   after ~15 collisions per particle every component has kurtosis 3
+   (Gaussian) and the variances are equal.  Noise of a sample kurtosis of
+   N Gaussian values: sd sqrt(24/N) = 0.035; of a variance ratio:
+   sqrt(4/N) = 0.014.  Tolerances 4 sd.
+
+5. Hybrid and validity monitor (one step): with alphaSwitch set inside
+   the range of the cells' alpha, cells above it have no candidate and no
+   collision, the log's NTC parcel fraction is that of the cells below,
+   and the write-time report counts the cells above alphaValid.  A restart
+   reads sigmaCrMax back (and it never decreases).
+"""
+
+import os
+import re
+import time
+
+import numpy as np
+import pytest
+
+from rmf import foam
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+CASE = os.path.join(HERE, "granularGas")
+BUILD = os.path.join(foam.PROJECT_DIR, "build", "validation", "grainCollisions")
+PROPS = "constant/grainsProperties"
+INIT = "system/grainsInitialiseDict"
+COEFFS = "subModels/NTCHardSphereCoeffs/"
+
+N = 20000                   # parcels
+W = 1.0                     # particles per parcel
+D = 1e-3                    # grain diameter [m]
+RHO = 2500.0                # grain density [kg/m^3]
+CP = 840.0                  # specific heat [J/kg/K]
+VBOX = 0.1**3               # box volume [m^3]
+DT = 5e-4                   # time step [s]
+MASS = RHO*np.pi*D**3/6     # one grain [kg]
+NREAL = W*N/VBOX            # real number density [1/m^3]
+SIGMA = np.pi*D**2          # cross-section of two equal grains [m^2]
+
+
+def report(name, ok, text):
+    print(f"{'PASS' if ok else 'FAIL'} {name}: {text}")
+    return ok
+
+
+def run_case(name, steps, entries=(), init_entries=()):
+    """Run a copy of the granular gas for steps steps, written at the start
+    and the end; returns (case, wall time)."""
+    case = foam.copy_setup(CASE, os.path.join(BUILD, name))
+    for entry, value in entries:
+        foam.set_entry(case, PROPS, entry, value)
+    for entry, value in init_entries:
+        foam.set_entry(case, INIT, entry, value)
+    foam.set_entry(case, "system/controlDict", "endTime", f"{steps*DT:.6g}")
+    foam.set_entry(case, "system/controlDict", "writeInterval", steps)
+    start = time.time()
+    foam.run(case, "blockMesh")
+    foam.run(case, "rarefiedMultiphaseInitialise")
+    foam.run(case, "rarefiedMultiphaseFoam")
+    wall = time.time() - start
+    print(f"\n{name}: {steps} steps, {wall:.1f} s")
+    return case, wall
+
+
+def parcels(case, t, name):
+    return foam.read_list(os.path.join(case, t, "lagrangian", "grains", name))
+
+
+def theta_of(U):
+    """Granular temperature: mean per-component variance [m^2/s^2]."""
+    return float(np.mean(U.var(axis=0)))
+
+
+def kurtosis(x):
+    x = x - x.mean()
+    return float(np.mean(x**4)/np.mean(x**2)**2)
+
+
+def log_series(case):
+    """Per step: time, collisions, kinetic energy, momentum, mass."""
+    log = os.path.join(case, "log.rarefiedMultiphaseFoam")
+    collisions = foam.log_values(log, "NTC collisions")[:, 0]
+    ke = foam.log_values(log, "Linear kinetic energy")[:, 0]
+    p = foam.log_values(log, "Linear momentum")
+    m = foam.log_values(log, "Current mass in system")[:, 0]
+    t = DT*np.arange(1, len(ke) + 1)
+    return t, collisions, ke, p, m
+
+
+# ---------------------------------------------------------------------------
+# e = 1: collision rate, conservation
+
+
+@pytest.fixture(scope="module")
+def elastic():
+    case, _ = run_case("elastic", 200)
+    return case
+
+
+def test_collision_rate(elastic):
+    t, collisions, _, _, _ = log_series(elastic)
+    theta = theta_of(parcels(elastic, "0", "U"))
+    C = collisions.sum()
+    measured = 2*C/(N*t[-1])
+    theory = NREAL*SIGMA*4*np.sqrt(theta/np.pi)
+    err = measured/theory - 1
+    tol = 4/np.sqrt(C)          # 4 sd of a Poisson count
+    assert report(
+        "collision rate (e = 1)", abs(err) < tol,
+        f"{measured:.2f}/s per parcel vs n sigma <c_r> = {theory:.2f}/s, "
+        f"error {100*err:+.2f} % (tolerance {100*tol:.2f} %: 4/sqrt(C), "
+        f"C = {C:.0f} collisions)")
+
+
+def test_elastic_conservation(elastic):
+    t_end = foam.latest_time(elastic)
+    U0, U1 = parcels(elastic, "0", "U"), parcels(elastic, t_end, "U")
+    mw = W*MASS
+    p0, p1 = mw*U0.sum(axis=0), mw*U1.sum(axis=0)
+    scale = mw*np.abs(U0).sum()
+    dp = np.abs(p1 - p0).max()/scale
+    ke0, ke1 = 0.5*mw*(U0**2).sum(), 0.5*mw*(U1**2).sum()
+    dke = abs(ke1/ke0 - 1)
+    T1 = parcels(elastic, t_end, "T")
+    ok = report("momentum (e = 1)", dp < 1e-12,
+                f"|dP|/sum(m|U|) = {dp:.1e} (tolerance 1e-12, round-off)")
+    ok &= report("kinetic energy (e = 1)", dke < 1e-12,
+                 f"|dKE|/KE = {dke:.1e} (tolerance 1e-12, round-off)")
+    ok &= report("no heating (e = 1)", np.all(np.abs(T1 - 300) < 1e-10),
+                 f"max |T - 300 K| = {np.abs(T1 - 300).max():.1e} K")
+    assert ok
+
+
+# ---------------------------------------------------------------------------
+# Relaxation of a two-peaked distribution
+
+
+def test_relaxation_to_maxwellian():
+    streams = ("{ plus { type box; min (0 0 0); max (0.1 0.1 0.1); d 1e-3;"
+               " nParcels 10000; nParticle 1; U0 (1 0 0); sigmaU 0.3; }"
+               " minus { type box; min (0 0 0); max (0.1 0.1 0.1); d 1e-3;"
+               " nParcels 10000; nParticle 1; U0 (-1 0 0); sigmaU 0.3; } }")
+    case, _ = run_case("twoStreams", 300, init_entries=[("regions", streams)])
+    U0 = parcels(case, "0", "U")
+    U1 = parcels(case, foam.latest_time(case), "U")
+    k0 = [kurtosis(U0[:, i]) for i in range(3)]
+    k1 = [kurtosis(U1[:, i]) for i in range(3)]
+    var1 = U1.var(axis=0)
+    tol_k = 4*np.sqrt(24/N)
+    tol_v = 4*np.sqrt(4/N)
+    ok = report("two peaks at start", k0[0] < 1.5,
+                f"x kurtosis {k0[0]:.3f} (two streams: < 1.5)")
+    for i, c in enumerate("xyz"):
+        ok &= report(f"kurtosis {c}", abs(k1[i] - 3) < tol_k,
+                     f"{k0[i]:.3f} -> {k1[i]:.3f} (Gaussian 3, tolerance "
+                     f"{tol_k:.3f}: 4 sqrt(24/N))")
+    ratio = var1.max()/var1.min() - 1
+    ok &= report("isotropy", ratio < tol_v,
+                 f"variances {var1.round(4)} (start {U0.var(axis=0).round(4)}),"
+                 f" max/min - 1 = {ratio:.4f} (tolerance {tol_v:.3f}: "
+                 f"4 sqrt(4/N))")
+    assert ok
+
+
+# ---------------------------------------------------------------------------
+# Haff's law, energy bookkeeping
+
+
+HAFF = [(0.9, 400), (0.7, 200)]      # (e, steps): to theta/theta_0 ~ 0.1
+
+
+@pytest.mark.parametrize("e, steps", HAFF, ids=[f"e{e}" for e, _ in HAFF])
+def test_haff_cooling(e, steps):
+    case, _ = run_case(f"haff{e}", steps, entries=[(COEFFS + "e", e)])
+    t, collisions, ke, p, m = log_series(case)
+    theta = (2*ke/m - (p**2).sum(axis=1)/m**2)/3
+    U0 = parcels(case, "0", "U")
+    theta0 = theta_of(U0)
+
+    # Least squares of 1/sqrt(theta) - 1/sqrt(theta0) = t/(tau sqrt(theta0))
+    a0 = 1/np.sqrt(theta0)
+    slope = np.sum(t*(1/np.sqrt(theta) - a0))/np.sum(t*t)
+    tau = a0/slope
+    tau_theory = 3*np.sqrt(np.pi)/(4*(1 - e*e)*NREAL*SIGMA*np.sqrt(theta0))
+    err = tau/tau_theory - 1
+    C = collisions.sum()
+    tol = 4*max(np.sqrt(1.5/C), 0.0045)
+    ok = report(
+        f"Haff tau (e = {e})", abs(err) < tol,
+        f"fitted {tau*1e3:.2f} ms vs theory {tau_theory*1e3:.2f} ms, "
+        f"error {100*err:+.2f} % (tolerance {100*tol:.2f} %: "
+        f"4 max(sqrt(1.5/C), 0.45 %), C = {C:.0f}); theta fell to "
+        f"{theta[-1]/theta0:.3f} theta_0")
+
+    # Energy: kinetic lost = heat gained (equal weights: exact)
+    t_end = foam.latest_time(case)
+    U1 = parcels(case, t_end, "U")
+    mw = W*MASS
+    lost = 0.5*mw*((U0**2).sum() - (U1**2).sum())
+    heat = mw*CP*(parcels(case, t_end, "T") - parcels(case, "0", "T")).sum()
+    rel = abs(heat/lost - 1)
+    ok &= report(f"energy bookkeeping (e = {e})", rel < 1e-9,
+                 f"kinetic energy lost {lost:.10e} J, heat gained "
+                 f"{heat:.10e} J, relative difference {rel:.1e} (tolerance "
+                 f"1e-9: round-off of T ~ 300 K at 17 digits)")
+
+    scale = mw*np.abs(U0).sum()
+    dp = np.abs(mw*(U1.sum(axis=0) - U0.sum(axis=0))).max()/scale
+    ok &= report(f"momentum (e = {e})", dp < 1e-12,
+                 f"|dP|/sum(m|U|) = {dp:.1e} (tolerance 1e-12, round-off)")
+    assert ok
+
+
+# ---------------------------------------------------------------------------
+# Hybrid regime split, validity monitor, restart of sigmaCrMax
+
+
+def cell_field(case, t, name):
+    return foam.read_field(os.path.join(case, t, f"{name}.grains"), 64)
+
+
+def test_hybrid_and_monitor():
+    # Mean alpha 0.0105 with ~2 % scatter between cells: thresholds at the
+    # mean split the cells
+    alpha_mean = N*W*np.pi*D**3/6/VBOX
+    case, _ = run_case("hybrid", 1, entries=[
+        (COEFFS + "alphaSwitch", f"{alpha_mean:.6g}"),
+        (COEFFS + "alphaValid", f"{alpha_mean:.6g}"),
+    ])
+    t1 = foam.latest_time(case)
+    nParcels = cell_field(case, t1, "nParcels")
+    alpha = nParcels*W*np.pi*D**3/6/(VBOX/64)
+    cand = cell_field(case, t1, "nCandidates")
+    coll = cell_field(case, t1, "nCollisions")
+    dense = alpha >= alpha_mean
+    with open(os.path.join(case, "log.rarefiedMultiphaseFoam")) as f:
+        log = f.read()
+    frac = foam.log_values(os.path.join(case, "log.rarefiedMultiphaseFoam"),
+                           "Parcel fraction NTC / MPPIC only")[-1]
+    m = re.search(r"NTCHardSphere: (\d+) of 64 cells above alphaValid", log)
+
+    ok = report("dense cells present", 0 < dense.sum() < 64,
+                f"{dense.sum()} of 64 cells at alpha >= {alpha_mean:.4g}")
+    ok &= report("no collisions in dense cells",
+                 cand[dense].sum() == 0 and coll[dense].sum() == 0,
+                 f"candidates {cand[dense].sum():.0f}, collisions "
+                 f"{coll[dense].sum():.0f} there; {coll[~dense].sum():.0f} "
+                 f"collisions in the dilute cells")
+    ok &= report("colliding elsewhere", coll[~dense].sum() > 0,
+                 f"{coll[~dense].sum():.0f} collisions in dilute cells")
+    expected = nParcels[~dense].sum()/N
+    ok &= report("regime split in the log",
+                 abs(frac[0] - expected) < 1e-6 and abs(frac.sum() - 1) < 1e-6,
+                 f"NTC / MPPIC only = {frac[0]:.4f} / {frac[1]:.4f}, "
+                 f"parcels in dilute cells {expected:.4f}")
+    ok &= report("validity monitor", m is not None
+                 and int(m.group(1)) == int((alpha > alpha_mean).sum()),
+                 f"reported {m.group(1) if m else None} cells above "
+                 f"alphaValid, counted {(alpha > alpha_mean).sum()}")
+
+    # Restart: one more step reads sigmaCrMax back
+    foam.set_entry(case, "system/controlDict", "endTime", f"{2*DT:.6g}")
+    foam.set_entry(case, "system/controlDict", "startFrom", "latestTime")
+    foam.run(case, "rarefiedMultiphaseFoam", log="log.restart")
+    with open(os.path.join(case, "log.restart")) as f:
+        restart = f.read()
+    t2 = foam.latest_time(case)
+    s1, s2 = cell_field(case, t1, "sigmaCrMax"), cell_field(case, t2, "sigmaCrMax")
+    ok &= report("sigmaCrMax restart",
+                 "read sigmaCrMax.grains" in restart and t2 != t1
+                 and np.all(s2 >= s1) and np.all(s1[~dense] > 0),
+                 f"read back: {'read sigmaCrMax.grains' in restart}, "
+                 f"never lowered: {bool(np.all(s2 >= s1))}")
+    assert ok
