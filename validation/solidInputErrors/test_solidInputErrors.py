@@ -82,6 +82,37 @@ def test_bad_cloud_entry(meshed, app, name, entry, value, valid):
     expect(out, PROPS, keyword, value.lstrip("-") if keyword == "type" else value, valid)
 
 
+# NTCHardSphere collisions (selected first): both programs check the
+# coefficients.  (name, entry, bad value, valid range)
+COLLISION_CASES = [
+    ("ntcRestitutionHigh", "e", "1.5", "[0, 1]"),
+    ("ntcRestitutionNegative", "e", "-0.2", "[0, 1]"),
+    ("ntcAlphaValid", "alphaValid", "-0.1", "(0, 1]"),
+    ("ntcAlphaSwitch", "alphaSwitch", "-0.05", "(0, 1]"),
+    ("ntcAlphaSwitchZero", "alphaSwitch", "0", "(0, 1]"),
+]
+
+
+@pytest.mark.parametrize("app", BOTH)
+@pytest.mark.parametrize("name, keyword, value, valid", COLLISION_CASES,
+                         ids=[c[0] for c in COLLISION_CASES])
+def test_bad_collision_entry(meshed, app, name, keyword, value, valid):
+    case = with_entry(meshed, name, PROPS, "subModels/NTCHardSphereCoeffs/"
+                      + keyword, value)
+    foam.set_entry(case, PROPS, "subModels/stochasticCollisionModel",
+                   "NTCHardSphere")
+    out = foam.run_failing(case, app)
+    expect(out, PROPS, "NTCHardSphereCoeffs", keyword, value, valid)
+
+
+def test_collision_model_name(meshed):
+    case = with_entry(meshed, "ntcName", PROPS,
+                      "subModels/stochasticCollisionModel", "NTCHardSpheres")
+    out = foam.run_failing(case, "rarefiedMultiphaseFoam")
+    expect(out, PROPS, "stochasticCollisionModel", "NTCHardSpheres",
+           "NTCHardSphere")
+
+
 # Initialisation dictionary (initialiser only)
 INIT_CASES = [
     ("alpha0High", "alpha0", "0.6", "(0, alphaPacked = 0.6)", "nParcels"),
