@@ -69,7 +69,29 @@ Maxwellian of variance 2 theta: <c_r> = 4 sqrt(theta/pi),
    N Gaussian values: sd sqrt(24/N) = 0.035; of a variance ratio:
    sqrt(4/N) = 0.014.  Tolerances 4 sd.
 
-5. Hybrid and validity monitor (one step): with alphaSwitch set inside
+5. Polydisperse (e = 1): 10000 grains of 1 mm and 2500 of 2 mm (W = 1,
+   m_2 = 8 m_1), started in equipartition (sigmaU_2 = sigmaU_1/sqrt(8):
+   m theta equal, so the state is stationary).  Events per volume and
+   time: sum over species pairs i <= j of n_i n_j sigma_ij <c_r,ij>
+   (halved for i = j), sigma_ij = pi ((d_i + d_j)/2)^2, <c_r,ij> =
+   sqrt(8 (theta_i + theta_j)/pi); tolerance 4/sqrt(C) as in 1.  Momentum
+   and kinetic energy conserved to round-off (equal weights, unequal
+   masses).
+
+6. Unequal weights: the same grains, half of them in parcels of W = 2
+   (10000 parcels of W = 1 and 5000 of W = 2, equal real densities):
+   physically the same gas, so Haff's tau is the same (tolerance that of
+   2. times sqrt(2): the W = 2 parcels halve the independent samples of
+   half the grains), and both weight classes cool alike (sample variances
+   of 3 N_c values: ratio sd sqrt(2/(3 N_1) + 2/(3 N_2)) = 0.014,
+   tolerance 4 sd).  A collision updates only one of its parcels with
+   probability up to 1/2, so energy and momentum are conserved on average
+   only: of some C/2 one-sided updates each misplaces at most ~m theta_0
+   of energy and ~m sqrt(theta_0) of each momentum component, a random
+   walk of sd sqrt(C/2) times that; tolerances 4 sd, against the initial
+   kinetic energy (3/2) n V m theta_0 for the energy.
+
+7. Hybrid and validity monitor (one step): with alphaSwitch set inside
    the range of the cells' alpha, cells above it have no candidate and no
    collision, the log's NTC parcel fraction is that of the cells below,
    and the write-time report counts the cells above alphaValid.  A restart
@@ -274,6 +296,101 @@ def test_haff_cooling(e, steps):
     dp = np.abs(mw*(U1.sum(axis=0) - U0.sum(axis=0))).max()/scale
     ok &= report(f"momentum (e = {e})", dp < 1e-12,
                  f"|dP|/sum(m|U|) = {dp:.1e} (tolerance 1e-12, round-off)")
+    assert ok
+
+
+def test_polydisperse():
+    mixed = ("{ small { type box; min (0 0 0); max (0.1 0.1 0.1); d 1e-3;"
+             " nParcels 10000; nParticle 1; U0 (0 0 0); sigmaU 1; }"
+             " large { type box; min (0 0 0); max (0.1 0.1 0.1); d 2e-3;"
+             " nParcels 2500; nParticle 1; U0 (0 0 0);"
+             f" sigmaU {1/np.sqrt(8):.15g}; }} }}")
+    case, _ = run_case("polydisperse", 200, init_entries=[("regions", mixed)])
+    t, collisions, _, _, _ = log_series(case)
+    C = collisions.sum()
+    U0, d0 = parcels(case, "0", "U"), parcels(case, "0", "d")
+    sizes = (1e-3, 2e-3)
+    n = [np.sum(np.isclose(d0, d))/VBOX for d in sizes]
+    theta = [theta_of(U0[np.isclose(d0, d)]) for d in sizes]
+    rate = 0
+    for i in range(2):
+        for j in range(i, 2):
+            sigma = np.pi*((sizes[i] + sizes[j])/2)**2
+            cr = np.sqrt(8*(theta[i] + theta[j])/np.pi)
+            rate += n[i]*n[j]*sigma*cr*(0.5 if i == j else 1)
+    measured = C/(VBOX*t[-1])
+    err = measured/rate - 1
+    tol = 4/np.sqrt(C)
+    ok = report(
+        "polydisperse collision rate (e = 1)", abs(err) < tol,
+        f"{measured:.4g} vs {rate:.4g} events/(m^3 s), error {100*err:+.2f} "
+        f"% (tolerance {100*tol:.2f} %: 4/sqrt(C), C = {C:.0f})")
+
+    t_end = foam.latest_time(case)
+    U1, d1 = parcels(case, t_end, "U"), parcels(case, t_end, "d")
+    m0 = RHO*np.pi*d0**3/6
+    m1 = RHO*np.pi*d1**3/6
+    dp = np.abs((m1[:, None]*U1).sum(axis=0)
+                - (m0[:, None]*U0).sum(axis=0)).max()/(m0[:, None]*np.abs(U0)).sum()
+    dke = abs((m1*(U1**2).sum(axis=1)).sum()/(m0*(U0**2).sum(axis=1)).sum() - 1)
+    ok &= report("momentum (polydisperse)", dp < 1e-12,
+                 f"|dP|/sum(m|U|) = {dp:.1e} (tolerance 1e-12, round-off)")
+    ok &= report("kinetic energy (polydisperse, e = 1)", dke < 1e-12,
+                 f"|dKE|/KE = {dke:.1e} (tolerance 1e-12, round-off)")
+    assert ok
+
+
+def test_unequal_weights():
+    e = 0.7
+    mixed = ("{ single { type box; min (0 0 0); max (0.1 0.1 0.1); d 1e-3;"
+             " nParcels 10000; nParticle 1; U0 (0 0 0); sigmaU 1; }"
+             " double { type box; min (0 0 0); max (0.1 0.1 0.1); d 1e-3;"
+             " nParcels 5000; nParticle 2; U0 (0 0 0); sigmaU 1; } }")
+    case, _ = run_case("unequalWeights", 200, entries=[(COEFFS + "e", e)],
+                       init_entries=[("regions", mixed)])
+    t, collisions, ke, p, m = log_series(case)
+    theta = (2*ke/m - (p**2).sum(axis=1)/m**2)/3
+    t_end = foam.latest_time(case)
+    U0, U1 = parcels(case, "0", "U"), parcels(case, t_end, "U")
+    W0, W1 = parcels(case, "0", "nParticle"), parcels(case, t_end, "nParticle")
+    mean0 = np.average(U0, axis=0, weights=W0)
+    theta0 = float(np.average(((U0 - mean0)**2).sum(axis=1), weights=W0)/3)
+    C = collisions.sum()
+
+    a0 = 1/np.sqrt(theta0)
+    tau = a0/(np.sum(t*(1/np.sqrt(theta) - a0))/np.sum(t*t))
+    tau_theory = 3*np.sqrt(np.pi)/(4*(1 - e*e)*NREAL*SIGMA*np.sqrt(theta0))
+    err = tau/tau_theory - 1
+    tol = np.sqrt(2)*4*max(np.sqrt(1.5/C), 0.0045)
+    ok = report(
+        "Haff tau, unequal weights", abs(err) < tol,
+        f"fitted {tau*1e3:.2f} ms vs theory {tau_theory*1e3:.2f} ms, error "
+        f"{100*err:+.2f} % (tolerance {100*tol:.2f} %: sqrt(2) x 4 max("
+        f"sqrt(1.5/C), 0.45 %), C = {C:.0f})")
+
+    th = [theta_of(U1[W1 == w]) for w in (1, 2)]
+    n1, n2 = (W1 == 1).sum(), (W1 == 2).sum()
+    tol_th = 4*np.sqrt(2/(3*n1) + 2/(3*n2))
+    ok &= report("weight classes cool alike", abs(th[1]/th[0] - 1) < tol_th,
+                 f"theta(W = 1) = {th[0]:.4f}, theta(W = 2) = {th[1]:.4f} "
+                 f"m^2/s^2 (tolerance {100*tol_th:.1f} %: 4 sd of the ratio)")
+
+    mass = MASS
+    ke0 = 0.5*mass*(W0*(U0**2).sum(axis=1)).sum()
+    ke1 = 0.5*mass*(W1*(U1**2).sum(axis=1)).sum()
+    heat = mass*CP*((W1*parcels(case, t_end, "T")).sum()
+                    - (W0*parcels(case, "0", "T")).sum())
+    rel = (heat - (ke0 - ke1))/ke0
+    tol_e = 4*np.sqrt(C/2)*mass*theta0/ke0
+    ok &= report("energy on average, unequal weights", abs(rel) < tol_e,
+                 f"heat gained - kinetic energy lost = {100*rel:+.3f} % of "
+                 f"KE(0) (tolerance {100*tol_e:.2f} %: 4 sqrt(C/2) m theta_0)")
+    dp = np.abs(mass*((W1[:, None]*U1).sum(axis=0)
+                      - (W0[:, None]*U0).sum(axis=0))).max()
+    tol_p = 4*np.sqrt(C/2)*mass*np.sqrt(theta0)
+    ok &= report("momentum on average, unequal weights", dp < tol_p,
+                 f"max |dP_i| = {dp:.2e} kg m/s (tolerance {tol_p:.2e}: "
+                 f"4 sqrt(C/2) m sqrt(theta_0))")
     assert ok
 
 
