@@ -159,12 +159,14 @@ def account_lost(case):
     return lost
 
 
-def check(case, end="0.6", cell_bound=True):
+def check(case, end="0.6", cell_bound=True, heated=False):
     """The checks of a finished run; returns (all passed, summary), the
     summary's "checks" naming each result (OVERPACKING: the two bounds).
     end: time of the settled-bed checks (None: skipped); cell_bound: False
     for runs with heavier parcels than the tutorial's, whose single cells
-    scatter by more than the bound's margin."""
+    scatter by more than the bound's margin; heated: inelastic grain
+    collisions (NTC) turn the kinetic energy they take into heat, so T
+    may only rise."""
     s = summary(case)
     z = np.array(s["z"])
     checks = s["checks"] = {}
@@ -173,12 +175,20 @@ def check(case, end="0.6", cell_bound=True):
         "parcels conserved",
         s["parcels0"] > 0 and s["parcelsLast"] == s["parcels0"] and lost == 0,
         f"{s['parcels0']} at 0, {s['parcelsLast']} at {s['lastTime']}, lost {lost:g}")
-    props = {"T": 300, "Cp": 840, "specularFraction": 0, "thermalAccommodation": 1}
+    props = {"Cp": 840, "specularFraction": 0, "thermalAccommodation": 1}
+    if not heated:
+        props["T"] = 300
     dev = carried(case, s["lastTime"], props)
     checks["properties"] = report(
         "parcel properties carried", dev == 0,
-        f"T, Cp, specularFraction, thermalAccommodation at {s['lastTime']} s:"
-        f" largest change {dev:g}")
+        f"{', '.join(props)} at {s['lastTime']} s: largest change {dev:g}")
+    if heated:
+        path = os.path.join(case, s["lastTime"], "lagrangian", CLOUD, "T")
+        t = foam.read_list(path)
+        checks["heated"] = report(
+            "collisions heat", t.min() >= 300 and t.max() > 300,
+            f"grain temperatures {t.min():g} K >= 300 K, highest"
+            f" {t.max():.6g} K > 300 K")
     lmax = max(s["alphaMaxLayer"].values())
     checks["layer bound"] = report(
         "layer alpha bound", lmax <= LAYER_MAX_BOUND,
@@ -251,6 +261,34 @@ def plot(runs, output, times=TIMES, title=None):
     axes[0][0].set_ylabel("height z [m]")
     if title:
         fig.suptitle(title)
+    fig.tight_layout()
+    fig.savefig(output, dpi=110)
+    plt.close(fig)
+    print(output)
+
+
+def plot_at(runs, time, output, title=None):
+    """alpha(z) of several runs at one time, on one axes."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    fig, ax = plt.subplots(figsize=(5.5, 5))
+    top = ALPHA_PACKED
+    styles = ("-", "--", ":", "-.")
+    for k, (label, s) in enumerate(runs.items()):
+        ax.plot(s["profiles"][time], s["z"], marker=".", label=label,
+                ls=styles[k % len(styles)], lw=2.5 if k == 0 else 1.2)
+        top = max(top, max(s["profiles"][time]))
+    ax.axvline(ALPHA_PACKED, color="grey", lw=0.8, ls="--")
+    ax.axvline(LAYER_MAX_BOUND, color="red", lw=0.8, ls=":",
+               label=f"layer bound {LAYER_MAX_BOUND:g}")
+    ax.set_xlim(0, 1.05*max(top, LAYER_MAX_BOUND))
+    ax.set_xlabel(f"layer-averaged solid volume fraction at {time} s")
+    ax.set_ylabel("height z [m]")
+    ax.legend(loc="upper right", fontsize=8)
+    if title:
+        ax.set_title(title)
     fig.tight_layout()
     fig.savefig(output, dpi=110)
     plt.close(fig)
