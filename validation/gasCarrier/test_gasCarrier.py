@@ -38,6 +38,8 @@ def test_carrier_fields_from_gas():
     for model in ("packingModel", "dampingModel", "isotropyModel"):
         foam.set_entry(case, PROPS, "subModels/" + model, "none")
     foam.set_entry(case, PROPS, "subModels/patchInteractionModel", "none")
+    # Required with gas present; none keeps the grains at rest
+    foam.set_entry(case, PROPS, "subModels/interphaseCoupling", "none")
     foam.set_steps(case, 5)
     foam.run(case, "blockMesh")
     foam.run(case, "rarefiedMultiphaseInitialise")

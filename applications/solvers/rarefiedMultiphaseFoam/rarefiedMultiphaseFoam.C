@@ -33,11 +33,15 @@ Description
                                   now in each cell (gasCarrierFields), then
                                   solidCloud::evolve: injection, forces,
                                   MPPIC / stochastic collisions, parcel move
-                                  with walls; the coupling's interphase
-                                  force and heat will join here
-      5. two-way gas update       hook "two-way" below: molecules that
-                                  collided with grains take their
-                                  post-collision states
+                                  with walls.  Before it, the interphase
+                                  coupling model's coupleParcels: force
+                                  and heat of the gas on the parcels
+                                  (SPEC.md section 4, keyword
+                                  interphaseCoupling)
+      5. two-way gas update       the coupling model's coupleGas:
+                                  molecules that collided with grains
+                                  take their post-collision states
+                                  (nothing for none and oneWay)
       6. sampling and writing     function objects (fieldAverage, dsmcFields)
                                   and runTime.write()
 
@@ -49,6 +53,7 @@ Description
 #include "fvCFD.H"
 #include "gasCloud.H"
 #include "solidCloud.H"
+#include "InterphaseCouplingModel.H"
 #include "gasCarrierFields.H"
 #include "progressReport.H"
 
@@ -97,11 +102,16 @@ int main(int argc, char *argv[])
             if (gas.valid())
             {
                 carrier->update(gas());
+                coupling->coupleParcels(gas());
             }
             solids->evolve();           // prints its own info()
         }
 
-        // Step 5, two-way: no interphase coupling yet
+        // Step 5, two-way models: the gas side of the coupling
+        if (coupling.valid())
+        {
+            coupling->coupleGas(gas());
+        }
 
         if (gas.valid())
         {

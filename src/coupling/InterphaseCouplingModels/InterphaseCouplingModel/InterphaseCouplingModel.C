@@ -1,0 +1,124 @@
+/*---------------------------------------------------------------------------*\
+  rarefiedMultiphaseFoam
+\*---------------------------------------------------------------------------*/
+
+#include "InterphaseCouplingModel.H"
+#include "zeroGradientFvPatchFields.H"
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+template<class CloudType>
+Foam::InterphaseCouplingModel<CloudType>::InterphaseCouplingModel
+(
+    CloudType& owner
+)
+:
+    CloudSubModelBase<CloudType>(owner),
+    momentum_(),
+    energy_(),
+    lastWriteTime_(owner.db().time().value())
+{}
+
+
+template<class CloudType>
+Foam::InterphaseCouplingModel<CloudType>::InterphaseCouplingModel
+(
+    const dictionary& dict,
+    CloudType& owner,
+    const word& type
+)
+:
+    CloudSubModelBase<CloudType>
+    (
+        word::null,
+        owner,
+        dict.optionalSubDict(type + "Coeffs"),
+        typeName,
+        type
+    ),
+    momentum_(owner.mesh().nCells(), Zero),
+    energy_(owner.mesh().nCells(), Zero),
+    lastWriteTime_(owner.db().time().value())
+{}
+
+
+// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
+
+template<class CloudType>
+void Foam::InterphaseCouplingModel<CloudType>::writeExchange()
+{
+    const fvMesh& mesh = this->owner().mesh();
+    const Time& time = mesh.time();
+
+    // Per volume and per time since the last write
+    const scalar interval = time.value() - lastWriteTime_;
+    const scalarField perVolTime
+    (
+        1/(mesh.V().field()*max(interval, VSMALL))
+    );
+
+    const auto header = [&](const word& name)
+    {
+        return IOobject
+        (
+            name + "." + this->owner().name(),
+            time.timeName(),
+            mesh,
+            IOobject::NO_READ,
+            IOobject::NO_WRITE,
+            false
+        );
+    };
+
+    volVectorField force
+    (
+        header("couplingForce"),
+        mesh,
+        dimensionedVector(dimForce/dimVolume, Zero),
+        zeroGradientFvPatchField<vector>::typeName
+    );
+    force.primitiveFieldRef() = momentum_*perVolTime;
+    force.correctBoundaryConditions();
+    force.write();
+
+    volScalarField heat
+    (
+        header("couplingHeat"),
+        mesh,
+        dimensionedScalar(dimPower/dimVolume, Zero),
+        zeroGradientFvPatchField<scalar>::typeName
+    );
+    heat.primitiveFieldRef() = energy_*perVolTime;
+    heat.correctBoundaryConditions();
+    heat.write();
+
+    momentum_ = Zero;
+    energy_ = Zero;
+    lastWriteTime_ = time.value();
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+template<class CloudType>
+void Foam::InterphaseCouplingModel<CloudType>::coupleParcels(gasCloud& gas)
+{
+    if (!active())
+    {
+        return;
+    }
+
+    parcelForcesAndHeat(gas);
+
+    if (this->owner().db().time().writeTime())
+    {
+        writeExchange();
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * * Selector * * * * * * * * * * * * * * * //
+
+#include "InterphaseCouplingModelNew.C"
+
+// ************************************************************************* //

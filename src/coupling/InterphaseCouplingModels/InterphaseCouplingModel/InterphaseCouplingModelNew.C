@@ -1,0 +1,41 @@
+/*---------------------------------------------------------------------------*\
+  rarefiedMultiphaseFoam
+\*---------------------------------------------------------------------------*/
+
+#include "InterphaseCouplingModel.H"
+
+// * * * * * * * * * * * * * * * * * Selector * * * * * * * * * * * * * * * //
+
+template<class CloudType>
+Foam::autoPtr<Foam::InterphaseCouplingModel<CloudType>>
+Foam::InterphaseCouplingModel<CloudType>::New
+(
+    const dictionary& dict,
+    CloudType& owner
+)
+{
+    const word modelType(dict.get<word>(typeName));
+
+    Info<< "Selecting interphase coupling model " << modelType << endl;
+
+    auto cstrIter = dictionaryConstructorTablePtr_->cfind(modelType);
+
+    if (!cstrIter.found())
+    {
+        FatalIOErrorInLookup
+        (
+            dict,
+            typeName,
+            modelType,
+            *dictionaryConstructorTablePtr_
+        ) << exit(FatalIOError);
+    }
+
+    return autoPtr<InterphaseCouplingModel<CloudType>>
+    (
+        cstrIter()(dict, owner)
+    );
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,25 @@
+/*---------------------------------------------------------------------------*\
+  rarefiedMultiphaseFoam
+
+Description
+    Registers the interphase coupling models (SPEC.md section 4) for
+    solidCloud, with gasCloud as the gas.
+
+\*---------------------------------------------------------------------------*/
+
+#include "solidCloud.H"
+#include "gasCloud.H"
+
+#include "InterphaseCouplingModel.H"
+#include "NoInterphaseCoupling.H"
+#include "OneWayCoupling.H"
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+makeInterphaseCouplingModel(solidCloud);
+
+makeInterphaseCouplingModelType(NoInterphaseCoupling, solidCloud);
+makeInterphaseCouplingModelType(OneWayCoupling, solidCloud);
+
+
+// ************************************************************************* //

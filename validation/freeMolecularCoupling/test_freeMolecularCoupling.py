@@ -1,0 +1,255 @@
+"""Free-molecular gas-grain coupling, interphaseCoupling oneWay (issue 5,
+items 2 and 7; SPEC.md 4.2): the force and heat the DSMC gas gives a
+grain held in it, against the analytic free-molecular values, end to end
+on the solver.
+
+Case (box/): one cubic-ish cell (0.1 x 0.08 x 0.08 m), periodic in every
+direction, so that the gas gains and loses neither simulators, momentum
+nor energy (NTC collisions conserve both exactly): its density, mean
+velocity and (monatomic) temperature stay those of the initial fill, to
+round-off, and the grain in the cell sees one uniform drifting Maxwellian.
+About 20000 simulators (n = 1e20 m^-3, W_g = 3.2e12), deltaT = 1e-5 s
+(~1/3 of a mean collision time), 1000 steps written every 100: ten
+interval averages of couplingForce.grains / couplingHeat.grains, each over
+~30 collision times, hence nearly independent.  One grain, one parcel of
+weight 1, d = 10 um, held in place by its size of mass: rho0 = 1e15 kg/m^3
+and Cp0 = 1e15 J/kg/K (its velocity changes by < 1e-9 m/s and its
+temperature by < 1e-12 K over a run; no particle forces, no walls).  The
+force and heat per grain are then couplingForce*V and couplingHeat*V.
+Fixed seeds (dsmcProperties and both initialise dictionaries).
+
+The theory is evaluated at the gas's realized state (the fill's density,
+velocity and temperature, read back from rho.gas, U.gas and the per-step
+energies of the log), so that the only error left is the time-average
+noise of the velocity distribution's shape, measured from the spread of
+the ten interval averages (sigma = sd/sqrt(10)).
+
+1. Drag (argon, eps = 0, alpha_T = 1, T_p = 300 K = T_g) at speed ratios
+   s = |U|/sqrt(2kT/m) = 0.5, 1, 2, 5: the force along U divided by
+   1/2 rho |U|^2 pi R^2 must be the free-molecular sphere C_D(s, T_p/T_g)
+   of SPEC.md 4.2 (validation/dragLaws/reference.py's closed form, which
+   Test-dragLaws checks against dragLaws::freeMolecularCd) within 2 %
+   (the issue's 2-3 %, its tighter end); and within 5 sigma of the
+   noise, so a bias well below 2 % is still caught when the noise allows.
+   The force across U must be below 1 % of the drag.
+
+2. Heat to a cold grain (T_p = 100 K) in a gas at rest (T_g = 300 K),
+   eps = 0.1, alpha_T = 0.9 (so that the factor (1 - eps) alpha_T = 0.81
+   is exercised), for argon (zeta = 0) and nitrogen (zeta = 2, Larsen-
+   Borgnakke exchange keeps its rotational energy in equilibrium).  The
+   expectation of SPEC.md 4.2's Q over a Maxwellian at rest with number
+   density n (the sum (W_g/V) sum_j becomes n E[.]): with w the molecular
+   velocity, E|w| = <c> = sqrt(8 k T_g/(pi m)), E[|w| m |w|^2/2] =
+   2 k T_g <c> (the flux-weighted mean translational energy) and
+   E[|w| E_int] = <c> <E_int> (independent of the velocity), so
+
+       Q = pi R^2 n (1 - eps) alpha_T <c> (2 k T_g + <E_int>
+                                           - (2 + zeta/2) k T_p)
+
+   and with <E_int> = (zeta/2) k T_g at equilibrium
+
+       Q = pi R^2 n (1 - eps) alpha_T <c> (2 + zeta/2) k (T_g - T_p).
+
+   The test uses the first form with T_g and <E_int> of each step (from
+   the log's average linear kinetic energy and internal energy per
+   molecule; for nitrogen they exchange energy, so T_g varies), averaged
+   over the run.  The fill's residual drift (~3 m/s, s ~ 0.01) changes Q
+   by O(s^2) ~ 1e-4, neglected.  Tolerance 2 % and 5 sigma, as for the
+   drag.
+
+3. Bad input (issue 5, item 9): an unknown interphaseCoupling name or a
+   missing keyword (required when gas is present) stops the solver with a
+   FatalIOError naming the file and keyword (and listing the valid
+   names).
+
+The measured figures are printed (PASS/FAIL lines); the whole directory
+takes about a minute and a half on one core.
+"""
+
+import math
+import os
+import shutil
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+from rmf import foam
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(foam.PROJECT_DIR, "validation", "dragLaws"))
+from reference import cd_fm_closed  # noqa: E402
+
+BOX = os.path.join(HERE, "box")
+BUILD = os.path.join(foam.PROJECT_DIR, "build", "validation", "freeMolecularCoupling")
+PROPS = "constant/grainsProperties"
+GAS = "constant/dsmcProperties"
+FILL = "system/dsmcInitialiseDict"
+
+K = 1.380649e-23
+MASS = {"Ar": 66.3e-27, "N2": 46.5e-27}
+ZETA = {"Ar": 0, "N2": 2}
+N_GAS = 1e20                # number density [1/m^3]
+T_GAS = 300.0               # [K]
+V_CELL = 0.1*0.08*0.08      # [m^3]
+D_GRAIN = 1e-5              # [m]
+AREA = math.pi*(D_GRAIN/2)**2
+STEPS, WRITE_EVERY = 1000, 100
+TOL = 0.02                  # the issue's 2-3 %, tighter end
+N_SIGMA = 5                 # noise bound
+
+
+def remove(case, dict_path, entry):
+    """Remove one entry of a case dictionary."""
+    subprocess.run(["foamDictionary", "-entry", entry, "-remove", dict_path],
+                   cwd=case, check=True, stdout=subprocess.DEVNULL)
+
+
+def make_case(name, species="Ar", velocity=(0, 0, 0), Tp=T_GAS, eps=0.0, alpha=1.0,
+          coupling="oneWay"):
+    """The box case with one species and one grain, meshed and filled."""
+    case = foam.copy_setup(BOX, os.path.join(BUILD, name))
+    # Initial gas fields and boundary values of upstream's periodic
+    # dsmcFoam tutorial (same patch names)
+    shutil.rmtree(os.path.join(case, "0"))
+    shutil.copytree(os.path.join(foam.dsmc_tutorial("freeSpacePeriodic"), "0"),
+                    os.path.join(case, "0"))
+    if species != "Ar":
+        foam.set_entry(case, GAS, "typeIdList", f"({species})")
+        foam.set_entry(case, FILL, "numberDensities/" + species, f"{N_GAS:g}")
+        remove(case, FILL, "numberDensities/Ar")
+    foam.set_entry(case, FILL, "velocity", "({:.6g} {:.6g} {:.6g})".format(*velocity))
+    foam.set_entry(case, PROPS, "constantProperties/T0", Tp)
+    foam.set_entry(case, PROPS, "constantProperties/specularFraction", eps)
+    foam.set_entry(case, PROPS, "constantProperties/thermalAccommodation", alpha)
+    foam.set_entry(case, PROPS, "subModels/interphaseCoupling", coupling)
+    control = "system/controlDict"
+    foam.set_entry(case, control, "endTime",
+                   f"{STEPS*float(foam.get_entry(case, control, 'deltaT')):.6g}")
+    foam.set_entry(case, control, "writeInterval", WRITE_EVERY)
+    foam.run(case, "blockMesh")
+    foam.run(case, "rarefiedMultiphaseInitialise")
+    return case
+
+
+def interval_values(case, name):
+    """Per write time: the exchange field of the single cell times V, i.e.
+    per grain (weight 1) and averaged over the interval since the previous
+    write."""
+    values = [foam.read_field(os.path.join(case, t, name + ".grains"), 1)[0]*V_CELL
+              for t in foam.times(case) if float(t) > 0]
+    assert len(values) == STEPS//WRITE_EVERY, len(values)
+    return np.array(values)
+
+
+def mean_and_sigma(values):
+    """Mean of the interval averages and its standard error."""
+    return values.mean(axis=0), values.std(axis=0, ddof=1)/math.sqrt(len(values))
+
+
+def report(what, measured, expected, sigma):
+    err = measured/expected - 1
+    ok = abs(err) < TOL and abs(err) < N_SIGMA*sigma/abs(expected)
+    print(f"\n{'PASS' if ok else 'FAIL'} {what}: measured {measured:.5g}, "
+          f"expected {expected:.5g}, error {100*err:+.3f} % "
+          f"(noise sigma {100*sigma/abs(expected):.3f} %, tolerance "
+          f"{100*TOL:g} % and {N_SIGMA} sigma)")
+    return err
+
+
+# ---------------------------------------------------------------------------
+# 1. Drag coefficient
+
+@pytest.mark.parametrize("s", [0.5, 1, 2, 5])
+def test_drag_coefficient(s):
+    m = MASS["Ar"]
+    U = s*math.sqrt(2*K*T_GAS/m)
+    case = make_case(f"drag_s{s:g}", velocity=(U, 0, 0))
+    foam.run(case, "rarefiedMultiphaseFoam")
+
+    # The gas's realized state, conserved: the same at every write
+    times = [t for t in foam.times(case) if float(t) > 0]
+    rho = np.array([foam.read_field(os.path.join(case, t, "rho.gas"), 1)[0] for t in times])
+    Ug = np.array([foam.read_field(os.path.join(case, t, "U.gas"), 1)[0] for t in times])
+    Tg = np.array([foam.read_field(os.path.join(case, t, "T.gas"), 1)[0] for t in times])
+    # (the files' 10 digits; U's transverse components are ~0, hence atol)
+    assert np.allclose(rho, rho[0], rtol=1e-6, atol=0), "gas mass not conserved"
+    assert np.allclose(Tg, Tg[0], rtol=1e-6, atol=0), "gas energy not conserved"
+    assert np.allclose(Ug, Ug[0], rtol=1e-6, atol=1e-6*U), "gas momentum not conserved"
+    rho, Ug, Tg = rho[0], Ug[0], Tg[0]
+
+    magU = np.linalg.norm(Ug)
+    along = Ug/magU
+    s_real = magU/math.sqrt(2*K*Tg/m)
+    cd_theory = cd_fm_closed(s_real, T_GAS/Tg)
+
+    F = interval_values(case, "couplingForce")
+    drag = F @ along
+    across = np.linalg.norm(F - np.outer(drag, along), axis=1)
+    q = 0.5*rho*magU**2*AREA
+    cd, sigma = mean_and_sigma(drag/q)
+    err = report(f"C_D at s = {s_real:.4f}", cd, cd_theory, sigma)
+    assert abs(err) < TOL, f"C_D error {err:+.4f} beyond {TOL}"
+    assert abs(err) < N_SIGMA*sigma/cd_theory, f"C_D error {err:+.4f} beyond {N_SIGMA} sigma"
+    assert across.mean() < 0.01*abs(drag.mean()), across.mean()/drag.mean()
+
+
+# ---------------------------------------------------------------------------
+# 2. Heat to a cold grain in a gas at rest
+
+@pytest.mark.parametrize("species", ["Ar", "N2"])
+def test_heat_flux(species):
+    m, zeta = MASS[species], ZETA[species]
+    Tp, eps, alpha = 100.0, 0.1, 0.9
+    case = make_case(f"heat_{species}", species=species, Tp=Tp, eps=eps, alpha=alpha)
+    log = foam.run(case, "rarefiedMultiphaseFoam")
+
+    # Per step (the state the coupling saw): translational temperature
+    # from the mean kinetic energy per molecule less the conserved drift,
+    # and the mean internal energy per molecule
+    Ug = foam.read_field(os.path.join(case, foam.latest_time(case), "U.gas"), 1)[0]
+    ke = foam.log_values(log, "Average linear kinetic energy")[:, 0]
+    eint = foam.log_values(log, "Average internal energy")[:, 0]
+    assert len(ke) == STEPS and len(eint) == STEPS, (len(ke), len(eint))
+    Tg = (ke - 0.5*m*Ug @ Ug)/(1.5*K)
+    cbar = np.sqrt(8*K*Tg/(math.pi*m))
+    q_theory = (AREA*N_GAS*(1 - eps)*alpha*cbar
+                * (2*K*Tg + eint - (2 + zeta/2)*K*Tp)).mean()
+
+    # The fill's density, exact (no simulator enters or leaves)
+    rho = foam.read_field(os.path.join(case, foam.latest_time(case), "rho.gas"), 1)[0]
+    q_theory *= rho/(N_GAS*m)
+
+    Q = interval_values(case, "couplingHeat")
+    q, sigma = mean_and_sigma(Q)
+    print(f"\n    {species}: T_g {Tg.mean():.2f} K (min {Tg.min():.2f}, max "
+          f"{Tg.max():.2f}), <E_int>/k {eint.mean()/K:.2f} K, T_p {Tp} K")
+    err = report(f"heat to a cold grain, {species}", q, q_theory, sigma)
+    assert abs(err) < TOL, f"heat error {err:+.4f} beyond {TOL}"
+    assert abs(err) < N_SIGMA*sigma/q_theory, f"heat error {err:+.4f} beyond {N_SIGMA} sigma"
+
+
+# ---------------------------------------------------------------------------
+# 3. Bad input
+
+@pytest.fixture(scope="module")
+def filled():
+    return make_case("filled")
+
+
+def test_unknown_coupling_name(filled):
+    case = foam.copy_case(filled, os.path.join(BUILD, "badName"))
+    foam.set_entry(case, PROPS, "subModels/interphaseCoupling", "oneway")
+    out = foam.run_failing(case, "rarefiedMultiphaseFoam")
+    for text in ("FOAM FATAL IO ERROR", "grainsProperties", "interphaseCoupling",
+                 "oneway", "oneWay", "none"):
+        assert text in out, text
+
+
+def test_missing_coupling_keyword(filled):
+    case = foam.copy_case(filled, os.path.join(BUILD, "noKeyword"))
+    remove(case, PROPS, "subModels/interphaseCoupling")
+    out = foam.run_failing(case, "rarefiedMultiphaseFoam")
+    for text in ("FOAM FATAL IO ERROR", "grainsProperties", "interphaseCoupling"):
+        assert text in out, text
