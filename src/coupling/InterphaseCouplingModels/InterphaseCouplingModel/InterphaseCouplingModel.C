@@ -3,7 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "InterphaseCouplingModel.H"
-#include "zeroGradientFvPatchFields.H"
+#include "cellFields.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -57,40 +57,17 @@ void Foam::InterphaseCouplingModel<CloudType>::writeExchange()
         1/(mesh.V().field()*max(interval, VSMALL))
     );
 
-    const auto header = [&](const word& name)
-    {
-        return IOobject
-        (
-            name + "." + this->owner().name(),
-            time.timeName(),
-            mesh,
-            IOobject::NO_READ,
-            IOobject::NO_WRITE,
-            false
-        );
-    };
-
-    volVectorField force
+    const word& cloud = this->owner().name();
+    writeCellField
     (
-        header("couplingForce"),
-        mesh,
-        dimensionedVector(dimForce/dimVolume, Zero),
-        zeroGradientFvPatchField<vector>::typeName
+        mesh, cloud, "couplingForce", dimForce/dimVolume,
+        vectorField(momentum_*perVolTime)
     );
-    force.primitiveFieldRef() = momentum_*perVolTime;
-    force.correctBoundaryConditions();
-    force.write();
-
-    volScalarField heat
+    writeCellField
     (
-        header("couplingHeat"),
-        mesh,
-        dimensionedScalar(dimPower/dimVolume, Zero),
-        zeroGradientFvPatchField<scalar>::typeName
+        mesh, cloud, "couplingHeat", dimPower/dimVolume,
+        scalarField(energy_*perVolTime)
     );
-    heat.primitiveFieldRef() = energy_*perVolTime;
-    heat.correctBoundaryConditions();
-    heat.write();
 
     momentum_ = Zero;
     energy_ = Zero;

@@ -4,7 +4,7 @@
 
 #include "SolidCloud.H"
 #include "inputChecks.H"
-#include "zeroGradientFvPatchFields.H"
+#include "cellFields.H"
 #include "PackingModel.H"
 #include "DampingModel.H"
 #include "IsotropyModel.H"
@@ -192,36 +192,6 @@ Foam::label Foam::SolidCloud<CloudType>::nInjected() const
 }
 
 
-template<class CloudType>
-template<class Type>
-void Foam::SolidCloud<CloudType>::writeCellField
-(
-    const word& name,
-    const dimensionSet& dims,
-    const Field<Type>& values
-) const
-{
-    GeometricField<Type, fvPatchField, volMesh> field
-    (
-        IOobject
-        (
-            name + "." + this->name(),
-            this->db().time().timeName(),
-            this->mesh(),
-            IOobject::NO_READ,
-            IOobject::NO_WRITE,
-            false
-        ),
-        this->mesh(),
-        dimensioned<Type>(dims, Zero),
-        zeroGradientFvPatchField<Type>::typeName
-    );
-    field.primitiveFieldRef() = values;
-    field.correctBoundaryConditions();
-    field.write();
-}
-
-
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 template<class CloudType>
@@ -321,10 +291,12 @@ void Foam::SolidCloud<CloudType>::writeFields() const
 
     const scalarField massOrOne(max(mass, VSMALL));
 
-    writeCellField<scalar>("alpha", dimless, this->theta()().primitiveField());
-    writeCellField<scalar>("nParcels", dimless, nParcels);
-    writeCellField<vector>("U", dimVelocity, momentum/massOrOne);
-    writeCellField<scalar>("T", dimTemperature, heat/massOrOne);
+    const fvMesh& mesh = this->mesh();
+    const word& cloud = this->name();
+    writeCellField(mesh, cloud, "alpha", dimless, this->theta()().primitiveField());
+    writeCellField(mesh, cloud, "nParcels", dimless, nParcels);
+    writeCellField(mesh, cloud, "U", dimVelocity, vectorField(momentum/massOrOne));
+    writeCellField(mesh, cloud, "T", dimTemperature, scalarField(heat/massOrOne));
 }
 
 

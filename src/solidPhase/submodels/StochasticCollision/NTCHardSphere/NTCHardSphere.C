@@ -5,7 +5,7 @@
 #include "NTCHardSphere.H"
 #include "inputChecks.H"
 #include "volFields.H"
-#include "zeroGradientFvPatchFields.H"
+#include "cellFields.H"
 #include "mathematicalConstants.H"
 
 // * * * * * * * * * * * * * * * Input checks  * * * * * * * * * * * * * * * //
@@ -197,32 +197,10 @@ void Foam::NTCHardSphere<CloudType>::writeFields(const scalarField& alpha)
 {
     const fvMesh& mesh = this->owner().mesh();
 
-    const auto write = [&](const word& name, const dimensionSet& dims,
-        const scalarField& values)
-    {
-        volScalarField field
-        (
-            IOobject
-            (
-                fieldName(name),
-                mesh.time().timeName(),
-                mesh,
-                IOobject::NO_READ,
-                IOobject::NO_WRITE,
-                false
-            ),
-            mesh,
-            dimensionedScalar(dims, Zero),
-            zeroGradientFvPatchScalarField::typeName
-        );
-        field.primitiveFieldRef() = values;
-        field.correctBoundaryConditions();
-        field.write();
-    };
-
-    write("sigmaCrMax", dimVolume/dimTime, sigmaCrMax_);
-    write("nCandidates", dimless, nCandidates_);
-    write("nCollisions", dimless, nCollisions_);
+    const word& cloud = this->owner().name();
+    writeCellField(mesh, cloud, "sigmaCrMax", dimVolume/dimTime, sigmaCrMax_);
+    writeCellField(mesh, cloud, "nCandidates", dimless, nCandidates_);
+    writeCellField(mesh, cloud, "nCollisions", dimless, nCollisions_);
 
     nCandidates_ = 0;
     nCollisions_ = 0;
