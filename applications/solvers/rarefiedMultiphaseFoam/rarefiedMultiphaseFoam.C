@@ -102,13 +102,16 @@ int main(int argc, char *argv[])
             if (gas.valid())
             {
                 carrier->update(gas());
-                coupling->coupleParcels(gas());
+            }
+            if (coupling.valid())
+            {
+                coupling->coupleParcels(gas.get());  // null without gas
             }
             solids->evolve();           // prints its own info()
         }
 
         // Step 5, two-way models: the gas side of the coupling
-        if (coupling.valid())
+        if (coupling.valid() && gas.valid())
         {
             coupling->coupleGas(gas());
         }

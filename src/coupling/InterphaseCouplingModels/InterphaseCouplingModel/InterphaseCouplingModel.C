@@ -78,7 +78,26 @@ void Foam::InterphaseCouplingModel<CloudType>::writeExchange()
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 template<class CloudType>
-void Foam::InterphaseCouplingModel<CloudType>::coupleParcels(gasCloud& gas)
+void Foam::InterphaseCouplingModel<CloudType>::checkGas
+(
+    const dictionary& dict,
+    const bool gasPresent
+) const
+{
+    if (needsGas() && !gasPresent)
+    {
+        FatalIOErrorInFunction(dict)
+            << "interphaseCoupling " << this->modelType()
+            << " in " << dict.name() << " needs a gas phase"
+            << " (constant/dsmcProperties), and the case has none"
+            << nl << "    valid without gas: none"
+            << exit(FatalIOError);
+    }
+}
+
+
+template<class CloudType>
+void Foam::InterphaseCouplingModel<CloudType>::coupleParcels(gasCloud* gas)
 {
     if (!active())
     {
