@@ -75,6 +75,35 @@ void Foam::InterphaseCouplingModel<CloudType>::writeExchange()
 }
 
 
+template<class CloudType>
+void Foam::InterphaseCouplingModel<CloudType>::writeKnudsen()
+{
+    const fvMesh& mesh = this->owner().mesh();
+    const scalarField lambda(sinceWrite_->lambda());
+
+    // Smallest parcel diameter per cell
+    scalarField dMin(mesh.nCells(), GREAT);
+    for (const auto& p : this->owner())
+    {
+        dMin[p.cell()] = min(dMin[p.cell()], p.d());
+    }
+
+    scalarField Knp(mesh.nCells(), Zero);
+    forAll(Knp, celli)
+    {
+        if (dMin[celli] < GREAT && dMin[celli] > 0)
+        {
+            Knp[celli] = lambda[celli]/dMin[celli];
+        }
+    }
+
+    writeCellField(mesh, "gas", "lambda", dimLength, lambda);
+    writeCellField(mesh, this->owner().name(), "Knp", dimless, Knp);
+
+    sinceWrite_->reset();
+}
+
+
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 template<class CloudType>
@@ -99,16 +128,30 @@ void Foam::InterphaseCouplingModel<CloudType>::checkGas
 template<class CloudType>
 void Foam::InterphaseCouplingModel<CloudType>::coupleParcels(gasCloud* gas)
 {
-    if (!active())
+    const bool writing = this->owner().db().time().writeTime();
+
+    if (gas)
     {
-        return;
+        if (!sinceWrite_.valid())
+        {
+            sinceWrite_.reset(new gasCellAverage(*gas, 0));
+        }
+        sinceWrite_->sample(*gas);
     }
 
-    parcelForcesAndHeat(gas);
-
-    if (this->owner().db().time().writeTime())
+    if (active())
     {
-        writeExchange();
+        parcelForcesAndHeat(gas);
+
+        if (writing)
+        {
+            writeExchange();
+        }
+    }
+
+    if (writing && sinceWrite_.valid())
+    {
+        writeKnudsen();
     }
 }
 
