@@ -13,6 +13,7 @@ Description
 #include "InterphaseCouplingModel.H"
 #include "NoInterphaseCoupling.H"
 #include "OneWayCoupling.H"
+#include "LothCoupling.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -20,6 +21,7 @@ makeInterphaseCouplingModel(solidCloud);
 
 makeInterphaseCouplingModelType(NoInterphaseCoupling, solidCloud);
 makeInterphaseCouplingModelType(OneWayCoupling, solidCloud);
+makeInterphaseCouplingModelType(LothCoupling, solidCloud);
 
 
 // ************************************************************************* //

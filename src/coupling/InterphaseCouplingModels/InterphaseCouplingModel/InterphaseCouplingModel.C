@@ -119,7 +119,8 @@ void Foam::InterphaseCouplingModel<CloudType>::checkGas
             << "interphaseCoupling " << this->modelType()
             << " in " << dict.name() << " needs a gas phase"
             << " (constant/dsmcProperties), and the case has none"
-            << nl << "    valid without gas: none"
+            << nl << "    valid without gas: none, or Loth with"
+            << " gas prescribed in LothCoeffs"
             << exit(FatalIOError);
     }
 }
