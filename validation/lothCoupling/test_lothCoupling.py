@@ -1,5 +1,5 @@
-"""Loth coupling (issue 5, items 4 and 9; SPEC.md 4.5), end to end on
-the solver.
+"""Loth coupling and the adaptive switch (issue 5, items 4, 5 and 9;
+SPEC.md 4.5, 4.6), end to end on the solver.
 
 1. interphaseCoupling Loth with a prescribed uniform gas, no DSMC (no
    constant/dsmcProperties): one light grain released at rest in a
@@ -31,6 +31,8 @@ the solver.
    file, keyword and value.
 3. Loth with gas dsmc: the force on a held grain in a drifting argon cell
    equals Loth's at the cell's realized state (test_loth_from_dsmc).
+4. adaptive: regime fractions (log and fields) for two grains on either
+   side of KnSwitch, and KnSwitch / averagingSteps input checks.
 """
 
 import math
@@ -290,3 +292,89 @@ def test_loth_bad_averaging_steps():
     out = foam.run_failing(case, "rarefiedMultiphaseFoam")
     for text in ("FOAM FATAL IO ERROR", "grainsProperties", "averagingSteps", "[1, "):
         assert text in out, (text, out[-2000:])
+
+
+# ---------------------------------------------------------------------------
+# adaptive (SPEC.md 4.6)
+
+@pytest.mark.parametrize("KnSwitch,fm", [(None, 0.5), (1e5, 0.0), (1.0, 1.0)])
+def test_adaptive_fractions(KnSwitch, fm):
+    """adaptive in the argon cell (lambda = 1.33 cm) with two grains:
+    d = 10 um (Kn_p = 1333) and d = 5 mm (Kn_p = 2.67).  Default KnSwitch
+    10: one in each regime, so 50 % / 50 % in the log and the fields;
+    KnSwitch 1e5: both Loth; KnSwitch 1: both free-molecular.  Exact."""
+    case = make_gas_case(f"adaptive_{KnSwitch}", "adaptive")
+    init = "system/grainsInitialiseDict"
+    foam.set_entry(case, init, "regions/big", "{}")
+    for key, value in (("type", "box"), ("min", "(0.01 -0.001 -0.001)"),
+                       ("max", "(0.012 0.001 0.001)"), ("d", 5e-3), ("nParcels", 1),
+                       ("nParticle", 1), ("U0", "(0 0 0)")):
+        foam.set_entry(case, init, "regions/big/" + key, value)
+    if KnSwitch is not None:
+        foam.set_entry(case, PROPS, "subModels/adaptiveCoeffs", "{}")
+        foam.set_entry(case, PROPS, "subModels/adaptiveCoeffs/KnSwitch", KnSwitch)
+    prepare(case)
+    log = foam.run(case, "rarefiedMultiphaseFoam")
+
+    with open(os.path.join(case, "log.rarefiedMultiphaseFoam")) as f:
+        lines = [line for line in f if line.startswith("adaptive: parcel-steps")]
+    assert len(lines) == 2, lines
+    t = foam.latest_time(case)
+    f_fm = foam.read_field(os.path.join(case, t, "freeMolecularFraction.grains"), 1)[0]
+    f_l = foam.read_field(os.path.join(case, t, "LothFraction.grains"), 1)[0]
+    knp = foam.read_field(os.path.join(case, t, "Knp.grains"), 1)[0]
+    ok = abs(f_fm - fm) < 1e-12 and abs(f_l - (1 - fm)) < 1e-12
+    print(f"\n{'PASS' if ok else 'FAIL'} adaptive, KnSwitch {KnSwitch}: free-molecular "
+          f"fraction {f_fm}, Loth {f_l} (expected {fm}, {1 - fm}); Knp (smallest d) "
+          f"{knp:.5g}; log: {lines[-1].strip()}")
+    assert ok
+    assert f"free-molecular {100*fm:g} %" in lines[-1], lines[-1]
+
+
+@pytest.mark.parametrize("entry,value,texts", [
+    ("subModels/adaptiveCoeffs/KnSwitch", 0, ("KnSwitch", "0", "(0, inf)")),
+    ("subModels/adaptiveCoeffs/averagingSteps", 0, ("averagingSteps", "0")),
+])
+def test_adaptive_bad_input(entry, value, texts):
+    case = make_gas_case("bad_" + entry.split("/")[-1], "adaptive")
+    foam.set_entry(case, PROPS, "subModels/adaptiveCoeffs", "{}")
+    foam.set_entry(case, PROPS, entry, value)
+    prepare(case)
+    out = foam.run_failing(case, "rarefiedMultiphaseFoam")
+    for text in ("FOAM FATAL IO ERROR", "grainsProperties") + texts:
+        assert text in out, (text, out[-2000:])
+
+
+@pytest.mark.parametrize("KnSwitch,same_as", [(1.0, "oneWay"), (1e5, "Loth")])
+def test_adaptive_branches(KnSwitch, same_as):
+    """adaptive with every parcel in one regime gives exactly (to the
+    files' 10 digits) the exchange of the model of that regime on the same
+    two grains in argon drifting at s = 1 (same seeds, same averaging
+    window of 200 steps): the branches are oneWay's and Loth's own."""
+    U = math.sqrt(2*K*T_G/M_AR)
+    fields = {}
+    for model in ("adaptive", same_as):
+        case = make_gas_case(f"branch_{same_as}_{model}", model, (U, 0, 0))
+        init = "system/grainsInitialiseDict"
+        foam.set_entry(case, init, "regions/big", "{}")
+        for key, value in (("type", "box"), ("min", "(0.01 -0.001 -0.001)"),
+                           ("max", "(0.012 0.001 0.001)"), ("d", 5e-3),
+                           ("nParcels", 1), ("nParticle", 1), ("U0", "(0 0 0)")):
+            foam.set_entry(case, init, "regions/big/" + key, value)
+        if model == "adaptive":
+            foam.set_entry(case, PROPS, "subModels/adaptiveCoeffs", "{}")
+            foam.set_entry(case, PROPS, "subModels/adaptiveCoeffs/KnSwitch", KnSwitch)
+        if model == "Loth":
+            foam.set_entry(case, PROPS, "subModels/LothCoeffs", "{}")
+            foam.set_entry(case, PROPS, "subModels/LothCoeffs/gas", "dsmc")
+        prepare(case)
+        foam.run(case, "rarefiedMultiphaseFoam")
+        t = foam.latest_time(case)
+        fields[model] = np.concatenate([
+            np.ravel(foam.read_field(os.path.join(case, t, name + ".grains"), 1))
+            for name in ("couplingForce", "couplingHeat")])
+    a, b = fields["adaptive"], fields[same_as]
+    ok = np.allclose(a, b, rtol=1e-9, atol=0) and np.any(a != 0)
+    print(f"\n{'PASS' if ok else 'FAIL'} adaptive (KnSwitch {KnSwitch}) = {same_as}: "
+          f"force/heat fields {a} vs {b}")
+    assert ok

@@ -14,6 +14,7 @@ Description
 #include "NoInterphaseCoupling.H"
 #include "OneWayCoupling.H"
 #include "LothCoupling.H"
+#include "AdaptiveCoupling.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -22,6 +23,7 @@ makeInterphaseCouplingModel(solidCloud);
 makeInterphaseCouplingModelType(NoInterphaseCoupling, solidCloud);
 makeInterphaseCouplingModelType(OneWayCoupling, solidCloud);
 makeInterphaseCouplingModelType(LothCoupling, solidCloud);
+makeInterphaseCouplingModelType(AdaptiveCoupling, solidCloud);
 
 
 // ************************************************************************* //
