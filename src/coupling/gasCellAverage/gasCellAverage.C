@@ -52,11 +52,16 @@ Foam::gasCellAverage::gasCellAverage
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::gasCellAverage::sample(const gasCloud& gas)
+Foam::scalar Foam::gasCellAverage::nextWeight()
 {
     ++nSamples_;
-    const scalar w =
-        1.0/scalar(window_ > 0 ? min(nSamples_, window_) : nSamples_);
+    return 1.0/scalar(window_ > 0 ? min(nSamples_, window_) : nSamples_);
+}
+
+
+void Foam::gasCellAverage::sample(const gasCloud& gas)
+{
+    const scalar w = nextWeight();
     const scalar keep = 1 - w;
 
     const auto& occupancy = gas.cellOccupancy();
@@ -83,6 +88,21 @@ void Foam::gasCellAverage::sample(const gasCloud& gas)
         momentum_[celli] = keep*momentum_[celli] + w*P;
         twiceKinetic_[celli] = keep*twiceKinetic_[celli] + w*E;
     }
+}
+
+
+void Foam::gasCellAverage::add(const gasCellAverage& step)
+{
+    const scalar w = nextWeight();
+    const scalar keep = 1 - w;
+
+    forAll(count_, typei)
+    {
+        count_[typei] = keep*count_[typei] + w*step.count_[typei];
+    }
+    mass_ = keep*mass_ + w*step.mass_;
+    momentum_ = keep*momentum_ + w*step.momentum_;
+    twiceKinetic_ = keep*twiceKinetic_ + w*step.twiceKinetic_;
 }
 
 

@@ -133,11 +133,13 @@ void Foam::InterphaseCouplingModel<CloudType>::coupleParcels(gasCloud* gas)
 
     if (gas)
     {
-        if (!sinceWrite_.valid())
+        if (!now_.valid())
         {
+            now_.reset(new gasCellAverage(*gas, 1));
             sinceWrite_.reset(new gasCellAverage(*gas, 0));
         }
-        sinceWrite_->sample(*gas);
+        now_->sample(*gas);
+        sinceWrite_->add(*now_);
     }
 
     if (active())

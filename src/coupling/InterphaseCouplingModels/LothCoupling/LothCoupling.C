@@ -74,7 +74,7 @@ void Foam::LothCoupling<CloudType>::sampleGas(gasCloud& gas)
     {
         average_.reset(new gasCellAverage(gas, averagingSteps_));
     }
-    average_->sample(gas);
+    average_->add(this->gasNow());
 }
 
 
