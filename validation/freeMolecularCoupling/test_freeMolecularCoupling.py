@@ -253,3 +253,53 @@ def test_missing_coupling_keyword(filled):
     out = foam.run_failing(case, "rarefiedMultiphaseFoam")
     for text in ("FOAM FATAL IO ERROR", "grainsProperties", "interphaseCoupling"):
         assert text in out, text
+
+
+# ---------------------------------------------------------------------------
+# 4. Mean free path and grain Knudsen number (SPEC.md section 2)
+
+D_REF, T_REF = 4.17e-10, 273.0     # argon's VHS diameter and Tref (box/constant)
+
+
+@pytest.mark.parametrize("omega", [0.81, 0.5])
+def test_mean_free_path(omega):
+    """lambda.gas of argon at rest in the periodic cell against the VHS
+    mean free path, Bird (1994) eq. 4.65,
+        lambda = 1/(sqrt(2) pi d^2 n (Tref/T)^(omega - 1/2)),
+    (omega = 0.5: the hard-sphere 1/(sqrt(2) pi d^2 n)), and
+    Knp.grains = lambda/d_p.  Two expectations:
+    - at the gas's realized n and T (rho.gas, T.gas: conserved exactly in
+      the periodic cell, so the since-last-write average is the same
+      state): within 1e-6 (the files' 10 digits and the pooled average's
+      round-off);
+    - at the nominal fill (n = 1e20 m^-3, T = 300 K): within 1 % (the
+      fill's sampled temperature of ~20000 simulators deviates by
+      ~sqrt(2/(3N)) ~ 0.6 %, and lambda varies as T^(omega - 1/2))."""
+    m = MASS["Ar"]
+    case = make_case(f"lambda_omega{omega:g}")
+    foam.set_entry(case, GAS, "moleculeProperties/Ar/omega", omega)
+    foam.set_entry(case, "system/controlDict", "endTime", "2e-3")
+    foam.set_entry(case, "system/controlDict", "writeInterval", 100)
+    foam.run(case, "rarefiedMultiphaseFoam")
+
+    times = [t for t in foam.times(case) if float(t) > 0]
+    assert len(times) == 2, times
+    for t in times:
+        lam = foam.read_field(os.path.join(case, t, "lambda.gas"), 1)[0]
+        knp = foam.read_field(os.path.join(case, t, "Knp.grains"), 1)[0]
+        n = foam.read_field(os.path.join(case, t, "rho.gas"), 1)[0]/m
+        Tg = foam.read_field(os.path.join(case, t, "T.gas"), 1)[0]
+
+        def vhs(n, T):
+            return 1/(math.sqrt(2)*math.pi*D_REF**2*n*(T_REF/T)**(omega - 0.5))
+
+        realized, nominal = vhs(n, Tg), vhs(N_GAS, T_GAS)
+        err_r, err_n = lam/realized - 1, lam/nominal - 1
+        ok = abs(err_r) < 1e-6 and abs(err_n) < 0.01
+        print(f"\n{'PASS' if ok else 'FAIL'} lambda (omega {omega}) at t = {t}: "
+              f"{lam:.6g} m; realized-state VHS {realized:.6g} m "
+              f"({err_r:+.2e}, tolerance 1e-6), nominal {nominal:.6g} m "
+              f"({100*err_n:+.3f} %, tolerance 1 %); Knp {knp:.6g}")
+        assert abs(err_r) < 1e-6, err_r
+        assert abs(err_n) < 0.01, err_n
+        assert abs(knp/(lam/D_GRAIN) - 1) < 1e-6, (knp, lam/D_GRAIN)

@@ -29,15 +29,17 @@ Description
                                   then the instantaneous gas fields are
                                   sampled (upstream's order: what steps 4-5
                                   change is sampled in the next step)
-      4. solid evolve             carrier fields sampled from the molecules
-                                  now in each cell (gasCarrierFields), then
-                                  solidCloud::evolve: injection, forces,
-                                  MPPIC / stochastic collisions, parcel move
-                                  with walls.  Before it, the interphase
-                                  coupling model's coupleParcels: force
-                                  and heat of the gas on the parcels
+      4. solid evolve             the interphase coupling model's
+                                  coupleParcels samples the molecules now
+                                  in each cell (the one pass over the gas
+                                  for steps 4-5: gasNow) and applies the
+                                  gas's force and heat to the parcels
                                   (SPEC.md section 4, keyword
-                                  interphaseCoupling)
+                                  interphaseCoupling); the carrier fields
+                                  (gasCarrierFields) are copied from that
+                                  sample; then solidCloud::evolve:
+                                  injection, forces, MPPIC / stochastic
+                                  collisions, parcel move with walls
       5. two-way gas update       the coupling model's coupleGas:
                                   molecules that collided with grains
                                   take their post-collision states
@@ -99,16 +101,20 @@ int main(int argc, char *argv[])
         // Step 4: solid phase
         if (solids.valid())
         {
+            if (coupling.valid())
+            {
+                coupling->coupleParcels(gas.get());  // null without gas
+            }
             if (gas.valid())
             {
-                carrier->update(gas());
-                coupling->coupleParcels(gas());
+                // Both phases: the coupling exists and sampled the gas
+                carrier->update(coupling->gasNow());
             }
             solids->evolve();           // prints its own info()
         }
 
         // Step 5, two-way models: the gas side of the coupling
-        if (coupling.valid())
+        if (coupling.valid() && gas.valid())
         {
             coupling->coupleGas(gas());
         }

@@ -13,6 +13,8 @@ Description
 #include "InterphaseCouplingModel.H"
 #include "NoInterphaseCoupling.H"
 #include "OneWayCoupling.H"
+#include "LothCoupling.H"
+#include "AdaptiveCoupling.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -20,6 +22,8 @@ makeInterphaseCouplingModel(solidCloud);
 
 makeInterphaseCouplingModelType(NoInterphaseCoupling, solidCloud);
 makeInterphaseCouplingModelType(OneWayCoupling, solidCloud);
+makeInterphaseCouplingModelType(LothCoupling, solidCloud);
+makeInterphaseCouplingModelType(AdaptiveCoupling, solidCloud);
 
 
 // ************************************************************************* //

@@ -75,21 +75,86 @@ void Foam::InterphaseCouplingModel<CloudType>::writeExchange()
 }
 
 
+template<class CloudType>
+void Foam::InterphaseCouplingModel<CloudType>::writeKnudsen()
+{
+    const fvMesh& mesh = this->owner().mesh();
+    const scalarField lambda(sinceWrite_->lambda());
+
+    // Smallest parcel diameter per cell
+    scalarField dMin(mesh.nCells(), GREAT);
+    for (const auto& p : this->owner())
+    {
+        dMin[p.cell()] = min(dMin[p.cell()], p.d());
+    }
+
+    scalarField Knp(mesh.nCells(), Zero);
+    forAll(Knp, celli)
+    {
+        if (dMin[celli] < GREAT && dMin[celli] > 0)
+        {
+            Knp[celli] = lambda[celli]/dMin[celli];
+        }
+    }
+
+    writeCellField(mesh, "gas", "lambda", dimLength, lambda);
+    writeCellField(mesh, this->owner().name(), "Knp", dimless, Knp);
+
+    sinceWrite_->reset();
+}
+
+
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 template<class CloudType>
-void Foam::InterphaseCouplingModel<CloudType>::coupleParcels(gasCloud& gas)
+void Foam::InterphaseCouplingModel<CloudType>::checkGas
+(
+    const dictionary& dict,
+    const bool gasPresent
+) const
 {
-    if (!active())
+    if (needsGas() && !gasPresent)
     {
-        return;
+        FatalIOErrorInFunction(dict)
+            << "interphaseCoupling " << this->modelType()
+            << " in " << dict.name() << " needs a gas phase"
+            << " (constant/dsmcProperties), and the case has none"
+            << nl << "    valid without gas: none, or Loth with"
+            << " gas prescribed in LothCoeffs"
+            << exit(FatalIOError);
+    }
+}
+
+
+template<class CloudType>
+void Foam::InterphaseCouplingModel<CloudType>::coupleParcels(gasCloud* gas)
+{
+    const bool writing = this->owner().db().time().writeTime();
+
+    if (gas)
+    {
+        if (!now_.valid())
+        {
+            now_.reset(new gasCellAverage(*gas, 1));
+            sinceWrite_.reset(new gasCellAverage(*gas, 0));
+        }
+        now_->sample(*gas);
+        sinceWrite_->add(*now_);
     }
 
-    parcelForcesAndHeat(gas);
-
-    if (this->owner().db().time().writeTime())
+    if (active())
     {
-        writeExchange();
+        parcelForcesAndHeat(gas);
+
+        if (writing)
+        {
+            writeExchange();
+        }
+    }
+
+    if (writing && sinceWrite_.valid())
+    {
+        writeKnudsen();
     }
 }
 

@@ -4,8 +4,6 @@
 
 #include "OneWayCoupling.H"
 #include "gasCloud.H"
-#include "physicoChemicalConstants.H"
-#include "mathematicalConstants.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -16,18 +14,21 @@ Foam::OneWayCoupling<CloudType>::OneWayCoupling
     CloudType& owner
 )
 :
-    InterphaseCouplingModel<CloudType>(dict, owner, typeName)
+    InterphaseCouplingModel<CloudType>(dict, owner, typeName),
+    sums_()
 {}
 
 
 // * * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * //
 
 template<class CloudType>
-void Foam::OneWayCoupling<CloudType>::parcelForcesAndHeat(gasCloud& gas)
+void Foam::OneWayCoupling<CloudType>::parcelForcesAndHeat(gasCloud* gasPtr)
 {
-    using constant::mathematical::pi;
-    const scalar k = constant::physicoChemical::k.value();
-    const scalar sqrtPiBy3 = sqrt(pi)/3;
+    gasCloud& gas = *gasPtr;
+    if (!sums_.valid())
+    {
+        sums_.reset(new freeMolecularSums(gas));
+    }
 
     CloudType& cloud = this->owner();
     const scalar dt = cloud.db().time().deltaTValue();
@@ -35,23 +36,8 @@ void Foam::OneWayCoupling<CloudType>::parcelForcesAndHeat(gasCloud& gas)
     const scalar Wg = gas.nParticle();
     const auto& occupancy = gas.cellOccupancy();
 
-    // Per species: mass and the thermal factor (2 + zeta/2) k
-    const auto& props = gas.constProps();
-    const label nSpecies = props.size();
-    scalarList mass(nSpecies);
-    scalarList energyFactor(nSpecies);
-    forAll(props, typei)
-    {
-        mass[typei] = props[typei].mass();
-        energyFactor[typei] =
-            (2 + 0.5*props[typei].internalDegreesOfFreedom())*k;
-    }
-
-    // Per parcel, per species: the diffuse re-emission speed term and the
-    // energy a re-emitted molecule carries away (both depend on T_p)
-    scalarList reemitSpeed(nSpecies);
-    scalarList reemitEnergy(nSpecies);
-
+    vector dP;
+    scalar dE;
     for (parcelType& p : cloud)
     {
         const label celli = p.cell();
@@ -61,43 +47,8 @@ void Foam::OneWayCoupling<CloudType>::parcelForcesAndHeat(gasCloud& gas)
             continue;
         }
 
-        const scalar Tp = p.T();
-        const scalar eps = p.specularFraction();
-        const scalar alpha = p.thermalAccommodation();
-        const scalar diffuse = (1 - eps)*alpha;
-        const scalar incident = 1 + 4.0/9.0*(1 - eps)*(1 - alpha);
-
-        forAll(props, typei)
-        {
-            reemitSpeed[typei] =
-                diffuse*sqrtPiBy3*sqrt(2*k*Tp/mass[typei]);
-            reemitEnergy[typei] = energyFactor[typei]*Tp;
-        }
-
-        const vector& Up = p.U();
-        vector F(Zero);
-        scalar Q = 0;
-        for (const gasParcel* g : inCell)
-        {
-            const label typei = g->typeId();
-            const scalar m = mass[typei];
-            const vector w(g->U() - Up);
-            const scalar magW = mag(w);
-
-            F += (m*(incident*magW + reemitSpeed[typei]))*w;
-            Q += magW*(0.5*m*sqr(magW) + g->Ei() - reemitEnergy[typei]);
-        }
-
-        const scalar scale = Wg*pi*sqr(0.5*p.d())/V[celli];
-        F *= scale;
-        Q *= scale*diffuse;
-
-        const scalar mp = p.mass();
-        p.U() += (dt/mp)*F;
-        p.T() += (dt/(mp*p.Cp()))*Q;
-
-        const scalar W = p.nParticle();
-        this->addExchange(celli, (W*dt)*F, W*dt*Q);
+        sums_->apply(p, inCell, Wg, V[celli], dt, dP, dE);
+        this->addExchange(celli, dP, dE);
     }
 }
 

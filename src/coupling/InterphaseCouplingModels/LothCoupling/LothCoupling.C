@@ -1,0 +1,218 @@
+/*---------------------------------------------------------------------------*\
+  rarefiedMultiphaseFoam
+\*---------------------------------------------------------------------------*/
+
+#include "LothCoupling.H"
+#include "gasCloud.H"
+#include "dragLaws.H"
+#include "inputChecks.H"
+#include "mathematicalConstants.H"
+
+// * * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * //
+
+template<class CloudType>
+void Foam::LothCoupling<CloudType>::readCoeffs
+(
+    const dictionary& dict,
+    const bool forceDsmc
+)
+{
+    fromDsmc_ = true;
+    if (!forceDsmc)
+    {
+        const word gas(dict.get<word>("gas"));
+        const wordList valid({"dsmc", "prescribed"});
+        if (!valid.found(gas))
+        {
+            inputChecks::notOneOf(dict, "gas", gas, valid);
+        }
+        fromDsmc_ = (gas == "dsmc");
+    }
+
+    if (fromDsmc_)
+    {
+        averagingSteps_ =
+            inputChecks::getLabelOrDefault
+            (
+                dict, "averagingSteps", 200, 1, labelMax
+            );
+        Info<< "    Loth: gas from the DSMC cells, averaged over "
+            << averagingSteps_ << " steps" << endl;
+    }
+    else
+    {
+        const dictionary& pd = dict.subDict("prescribed");
+        gasState& g = prescribed_;
+        g.rho = inputChecks::getPositive(pd, "rho");
+        g.U = pd.get<vector>("U");
+        g.T = inputChecks::getPositive(pd, "T");
+        g.mu = inputChecks::getPositive(pd, "mu");
+        g.gamma = pd.get<scalar>("gamma");
+        // 5/3 as written with 6 digits (1.66667) is accepted
+        if (!(g.gamma > 1 && g.gamma <= 5.0/3.0*(1 + 1e-5)))
+        {
+            inputChecks::outOfRange(pd, "gamma", g.gamma, "(1, 5/3]");
+        }
+        g.R = inputChecks::getPositive(pd, "R");
+        g.Pr = 4*g.gamma/(9*g.gamma - 5);
+        if (pd.found("Pr"))
+        {
+            g.Pr = inputChecks::getPositive(pd, "Pr");
+        }
+        Info<< "    Loth: prescribed uniform gas rho " << g.rho
+            << " U " << g.U << " T " << g.T << " mu " << g.mu
+            << " gamma " << g.gamma << " R " << g.R << " Pr " << g.Pr
+            << endl;
+    }
+}
+
+
+template<class CloudType>
+void Foam::LothCoupling<CloudType>::sampleGas(gasCloud& gas)
+{
+    if (!average_.valid())
+    {
+        average_.reset(new gasCellAverage(gas, averagingSteps_));
+    }
+    average_->add(this->gasNow());
+}
+
+
+template<class CloudType>
+bool Foam::LothCoupling<CloudType>::cellGas
+(
+    const label celli,
+    gasState& g
+) const
+{
+    if (!fromDsmc_)
+    {
+        g = prescribed_;
+        return true;
+    }
+
+    const gasCellAverage& a = average_();
+    g.T = a.T(celli);
+    g.mu = a.mu(celli);
+    if (!(g.T > 0 && g.mu > 0))
+    {
+        return false;
+    }
+    g.rho = a.rho(celli);
+    g.U = a.U(celli);
+    g.gamma = a.gamma(celli);
+    g.R = a.R(celli);
+    g.Pr = 4*g.gamma/(9*g.gamma - 5);
+    return true;
+}
+
+
+template<class CloudType>
+void Foam::LothCoupling<CloudType>::relax
+(
+    parcelType& p,
+    const gasState& g,
+    const scalar dt
+)
+{
+    using constant::mathematical::pi;
+
+    const scalar d = p.d();
+    const scalar mp = p.mass();
+    const vector U0(p.U());
+    const scalar T0 = p.T();
+
+    const vector v0(g.U - U0);
+    const scalar magV0 = mag(v0);
+    const scalar Re = g.rho*magV0*d/g.mu;
+    const scalar sqrtRT = sqrt(g.R*g.T);
+
+    // Drag: exact relaxation with C_D frozen over the step (expm1: a
+    // heavy grain's change below the round-off of U still counts)
+    vector dU(Zero);
+    if (Re > 0)
+    {
+        const scalar Ma = magV0/(sqrt(g.gamma)*sqrtRT);
+        const scalar Cd = dragLaws::lothCd(Re, Ma, g.gamma, T0/g.T);
+        const scalar beta = Cd*(pi*sqr(d)/8)*g.rho*magV0/mp;
+        dU = -expm1(-beta*dt)*v0;
+    }
+
+    // Heat: Nu = Nu_c/(1 + Nu_c/Nu_fm) with Kn = lambda/d (dragLaws)
+    const scalar Kn = g.mu/(g.rho*d)*sqrt(pi/2)/sqrtRT;
+    const scalar NuC = dragLaws::nusseltContinuum(Re, g.Pr);
+    const scalar NuFm =
+        dragLaws::nusseltFreeMolecular(Kn, g.Pr, g.gamma, p.thermalAccommodation());
+    const scalar Nu = NuC/(1 + NuC/NuFm);
+    const scalar kappa = g.mu*g.gamma*g.R/((g.gamma - 1)*g.Pr);
+    const scalar rate = Nu*pi*d*kappa/(mp*p.Cp());
+    const scalar dT = -expm1(-rate*dt)*(g.T - T0);
+
+    p.U() = U0 + dU;
+    p.T() = T0 + dT;
+
+    const scalar W = p.nParticle();
+    this->addExchange(p.cell(), (W*mp)*dU, W*mp*p.Cp()*dT);
+}
+
+
+template<class CloudType>
+void Foam::LothCoupling<CloudType>::parcelForcesAndHeat(gasCloud* gas)
+{
+    CloudType& cloud = this->owner();
+    const scalar dt = cloud.db().time().deltaTValue();
+
+    if (fromDsmc_)
+    {
+        sampleGas(*gas);
+    }
+
+    gasState g;
+    for (parcelType& p : cloud)
+    {
+        if (cellGas(p.cell(), g))
+        {
+            relax(p, g, dt);
+        }
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+template<class CloudType>
+Foam::LothCoupling<CloudType>::LothCoupling
+(
+    const dictionary& dict,
+    CloudType& owner
+)
+:
+    InterphaseCouplingModel<CloudType>(dict, owner, typeName),
+    fromDsmc_(true),
+    averagingSteps_(1),
+    prescribed_(),
+    average_()
+{
+    readCoeffs(dict.subDict(typeName + "Coeffs"), false);
+}
+
+
+template<class CloudType>
+Foam::LothCoupling<CloudType>::LothCoupling
+(
+    const dictionary& dict,
+    CloudType& owner,
+    const word& type
+)
+:
+    InterphaseCouplingModel<CloudType>(dict, owner, type),
+    fromDsmc_(true),
+    averagingSteps_(1),
+    prescribed_(),
+    average_()
+{
+    readCoeffs(dict.optionalSubDict(type + "Coeffs"), true);
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,246 @@
+/*---------------------------------------------------------------------------*\
+  rarefiedMultiphaseFoam
+\*---------------------------------------------------------------------------*/
+
+#include "gasCellAverage.H"
+#include "physicoChemicalConstants.H"
+#include "mathematicalConstants.H"
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::gasCellAverage::gasCellAverage
+(
+    const gasCloud& gas,
+    const label window
+)
+:
+    mesh_(gas.mesh()),
+    window_(window),
+    nSamples_(0),
+    count_(gas.constProps().size()),
+    mass_(mesh_.nCells(), Zero),
+    momentum_(mesh_.nCells(), Zero),
+    twiceKinetic_(mesh_.nCells(), Zero),
+    m_(gas.constProps().size()),
+    d_(m_.size()),
+    omega_(m_.size()),
+    zeta_(m_.size()),
+    muRef_(m_.size()),
+    Tref_
+    (
+        gas.binaryCollision().coeffDict().getOrDefault<scalar>("Tref", 273)
+    ),
+    Wg_(gas.nParticle())
+{
+    using constant::mathematical::pi;
+    const scalar k = constant::physicoChemical::k.value();
+
+    forAll(m_, typei)
+    {
+        const auto& props = gas.constProps()[typei];
+        count_[typei].setSize(mesh_.nCells(), Zero);
+        m_[typei] = props.mass();
+        d_[typei] = props.d();
+        omega_[typei] = props.omega();
+        zeta_[typei] = props.internalDegreesOfFreedom();
+        muRef_[typei] =
+            15*sqrt(m_[typei]*k*Tref_/pi)
+           /(2*(5 - 2*omega_[typei])*(7 - 2*omega_[typei])*sqr(d_[typei]));
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::scalar Foam::gasCellAverage::nextWeight()
+{
+    ++nSamples_;
+    return 1.0/scalar(window_ > 0 ? min(nSamples_, window_) : nSamples_);
+}
+
+
+void Foam::gasCellAverage::sample(const gasCloud& gas)
+{
+    const scalar w = nextWeight();
+    const scalar keep = 1 - w;
+
+    const auto& occupancy = gas.cellOccupancy();
+
+    forAll(occupancy, celli)
+    {
+        scalar M = 0;
+        vector P = Zero;
+        scalar E = 0;
+        for (auto& c : count_)
+        {
+            c[celli] *= keep;
+        }
+        for (const gasParcel* p : occupancy[celli])
+        {
+            const label typei = p->typeId();
+            const scalar mi = m_[typei];
+            count_[typei][celli] += w;
+            M += mi;
+            P += mi*p->U();
+            E += mi*magSqr(p->U());
+        }
+        mass_[celli] = keep*mass_[celli] + w*M;
+        momentum_[celli] = keep*momentum_[celli] + w*P;
+        twiceKinetic_[celli] = keep*twiceKinetic_[celli] + w*E;
+    }
+}
+
+
+void Foam::gasCellAverage::add(const gasCellAverage& step)
+{
+    const scalar w = nextWeight();
+    const scalar keep = 1 - w;
+
+    forAll(count_, typei)
+    {
+        count_[typei] = keep*count_[typei] + w*step.count_[typei];
+    }
+    mass_ = keep*mass_ + w*step.mass_;
+    momentum_ = keep*momentum_ + w*step.momentum_;
+    twiceKinetic_ = keep*twiceKinetic_ + w*step.twiceKinetic_;
+}
+
+
+void Foam::gasCellAverage::reset()
+{
+    nSamples_ = 0;
+    for (auto& c : count_)
+    {
+        c = Zero;
+    }
+    mass_ = Zero;
+    momentum_ = Zero;
+    twiceKinetic_ = Zero;
+}
+
+
+Foam::scalar Foam::gasCellAverage::nSimulators(const label celli) const
+{
+    scalar N = 0;
+    for (const auto& c : count_)
+    {
+        N += c[celli];
+    }
+    return N;
+}
+
+
+Foam::scalar Foam::gasCellAverage::n(const label celli) const
+{
+    return Wg_*nSimulators(celli)/mesh_.V()[celli];
+}
+
+
+Foam::scalar Foam::gasCellAverage::rho(const label celli) const
+{
+    return Wg_*mass_[celli]/mesh_.V()[celli];
+}
+
+
+Foam::vector Foam::gasCellAverage::U(const label celli) const
+{
+    const scalar M = mass_[celli];
+    return M > 0 ? momentum_[celli]/M : vector::zero;
+}
+
+
+Foam::scalar Foam::gasCellAverage::T(const label celli) const
+{
+    const scalar M = mass_[celli];
+    const scalar N = nSimulators(celli);
+    if (!(M > 0 && N > 0))
+    {
+        return 0;
+    }
+    return
+        max(twiceKinetic_[celli] - magSqr(momentum_[celli])/M, 0)
+       /(3*constant::physicoChemical::k.value()*N);
+}
+
+
+Foam::scalar Foam::gasCellAverage::mu(const label celli) const
+{
+    const scalar N = nSimulators(celli);
+    const scalar Tc = T(celli);
+    if (!(N > 0 && Tc > 0))
+    {
+        return 0;
+    }
+    scalar sum = 0;
+    forAll(count_, typei)
+    {
+        sum += count_[typei][celli]*muRef_[typei]*pow(Tc/Tref_, omega_[typei]);
+    }
+    return sum/N;
+}
+
+
+Foam::scalar Foam::gasCellAverage::gamma(const label celli) const
+{
+    const scalar N = nSimulators(celli);
+    scalar zeta = 0;
+    if (N > 0)
+    {
+        forAll(count_, typei)
+        {
+            zeta += count_[typei][celli]*zeta_[typei];
+        }
+        zeta /= N;
+    }
+    return (5 + zeta)/(3 + zeta);
+}
+
+
+Foam::scalar Foam::gasCellAverage::R(const label celli) const
+{
+    const scalar M = mass_[celli];
+    return
+        M > 0
+      ? constant::physicoChemical::k.value()*nSimulators(celli)/M
+      : 0;
+}
+
+
+Foam::scalar Foam::gasCellAverage::lambda(const label celli) const
+{
+    using constant::mathematical::pi;
+
+    const scalar N = nSimulators(celli);
+    const scalar Tc = T(celli);
+    if (!(N > 0 && Tc > 0))
+    {
+        return 0;
+    }
+
+    // sum_s x_s d_s^2 (Tref/T)^(omega_s - 1/2)
+    scalar sigma = 0;
+    forAll(count_, typei)
+    {
+        sigma +=
+            count_[typei][celli]*sqr(d_[typei])
+           *pow(Tref_/Tc, omega_[typei] - 0.5);
+    }
+    sigma /= N;
+
+    return 1/(sqrt(2.0)*pi*n(celli)*sigma);
+}
+
+
+Foam::tmp<Foam::scalarField> Foam::gasCellAverage::lambda() const
+{
+    auto tl = tmp<scalarField>::New(mesh_.nCells());
+    scalarField& l = tl.ref();
+    forAll(l, celli)
+    {
+        l[celli] = lambda(celli);
+    }
+    return tl;
+}
+
+
+// ************************************************************************* //
