@@ -73,7 +73,7 @@ void Foam::AdaptiveCoupling<CloudType>::parcelForcesAndHeat(gasCloud* gasPtr)
     {
         sums_.reset(new freeMolecularSums(gas));
     }
-    this->sampleGas(gas);
+    this->updateGas(&gas);
 
     CloudType& cloud = this->owner();
     const scalar dt = cloud.db().time().deltaTValue();

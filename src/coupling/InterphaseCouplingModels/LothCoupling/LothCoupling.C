@@ -7,6 +7,8 @@
 #include "dragLaws.H"
 #include "inputChecks.H"
 #include "mathematicalConstants.H"
+#include "fvcCurl.H"
+#include "extrapolatedCalculatedFvPatchFields.H"
 
 // * * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * //
 
@@ -27,6 +29,12 @@ void Foam::LothCoupling<CloudType>::readCoeffs
             inputChecks::notOneOf(dict, "gas", gas, valid);
         }
         fromDsmc_ = (gas == "dsmc");
+    }
+
+    lift_ = dict.getOrDefault<bool>("lift", false);
+    if (lift_)
+    {
+        Info<< "    Loth: shear lift on" << endl;
     }
 
     if (fromDsmc_)
@@ -68,13 +76,46 @@ void Foam::LothCoupling<CloudType>::readCoeffs
 
 
 template<class CloudType>
-void Foam::LothCoupling<CloudType>::sampleGas(gasCloud& gas)
+void Foam::LothCoupling<CloudType>::updateVorticity()
 {
-    if (!average_.valid())
+    const fvMesh& mesh = this->owner().mesh();
+
+    volVectorField Ug
+    (
+        IOobject("LothGasU", mesh.time().timeName(), mesh),
+        mesh,
+        dimensionedVector(dimVelocity, Zero),
+        extrapolatedCalculatedFvPatchVectorField::typeName
+    );
+    gasState g;
+    forAll(Ug, celli)
     {
-        average_.reset(new gasCellAverage(gas, averagingSteps_));
+        if (cellGas(celli, g))
+        {
+            Ug[celli] = g.U;
+        }
     }
-    average_->add(this->gasNow());
+    Ug.correctBoundaryConditions();
+
+    curlU_ = fvc::curl(Ug)().primitiveField();
+}
+
+
+template<class CloudType>
+void Foam::LothCoupling<CloudType>::updateGas(gasCloud* gas)
+{
+    if (fromDsmc_)
+    {
+        if (!average_.valid())
+        {
+            average_.reset(new gasCellAverage(*gas, averagingSteps_));
+        }
+        average_->add(this->gasNow());
+    }
+    if (lift_)
+    {
+        updateVorticity();
+    }
 }
 
 
@@ -88,6 +129,7 @@ bool Foam::LothCoupling<CloudType>::cellGas
     if (!fromDsmc_)
     {
         g = prescribed_;
+        g.curlU = lift_ ? curlU_[celli] : vector::zero;
         return true;
     }
 
@@ -103,6 +145,7 @@ bool Foam::LothCoupling<CloudType>::cellGas
     g.gamma = a.gamma(celli);
     g.R = a.R(celli);
     g.Pr = 4*g.gamma/(9*g.gamma - 5);
+    g.curlU = lift_ ? curlU_[celli] : vector::zero;
     return true;
 }
 
@@ -138,6 +181,17 @@ void Foam::LothCoupling<CloudType>::relax
         dU = -expm1(-beta*dt)*v0;
     }
 
+    // Shear lift, explicit
+    const vector liftDir(v0 ^ g.curlU);
+    if (lift_ && Re > 0 && mag(liftDir) > 0)
+    {
+        const scalar omegaStar = mag(g.curlU)*d/magV0;
+        const scalar Cl = dragLaws::lothCl(Re, omegaStar);
+        dU +=
+            (Cl*(pi*sqr(d)/8)*g.rho*sqr(magV0)*dt/mp)
+           *liftDir/mag(liftDir);
+    }
+
     // Heat: Nu = Nu_c/(1 + Nu_c/Nu_fm) with Kn = lambda/d (dragLaws)
     const scalar Kn = g.mu/(g.rho*d)*sqrt(pi/2)/sqrtRT;
     const scalar NuC = dragLaws::nusseltContinuum(Re, g.Pr);
@@ -162,10 +216,7 @@ void Foam::LothCoupling<CloudType>::parcelForcesAndHeat(gasCloud* gas)
     CloudType& cloud = this->owner();
     const scalar dt = cloud.db().time().deltaTValue();
 
-    if (fromDsmc_)
-    {
-        sampleGas(*gas);
-    }
+    updateGas(gas);
 
     gasState g;
     for (parcelType& p : cloud)
@@ -191,7 +242,9 @@ Foam::LothCoupling<CloudType>::LothCoupling
     fromDsmc_(true),
     averagingSteps_(1),
     prescribed_(),
-    average_()
+    average_(),
+    lift_(false),
+    curlU_()
 {
     readCoeffs(dict.subDict(typeName + "Coeffs"), false);
 }
@@ -209,7 +262,9 @@ Foam::LothCoupling<CloudType>::LothCoupling
     fromDsmc_(true),
     averagingSteps_(1),
     prescribed_(),
-    average_()
+    average_(),
+    lift_(false),
+    curlU_()
 {
     readCoeffs(dict.optionalSubDict(type + "Coeffs"), true);
 }
