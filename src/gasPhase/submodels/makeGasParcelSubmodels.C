@@ -3,7 +3,8 @@
 
 Description
     Registers upstream's DSMC submodels (binary collision, wall interaction,
-    inflow boundary) in the selection tables of DSMCCloud<gasParcel>.
+    inflow boundary) and ours (PatchInflow) in the selection tables of
+    DSMCCloud<gasParcel>.
 
 \*---------------------------------------------------------------------------*/
 
@@ -19,6 +20,7 @@ Description
 
 #include "NoInflow.H"
 #include "FreeStream.H"
+#include "PatchInflow.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -43,6 +45,7 @@ namespace Foam
     makeInflowBoundaryModel(gasCloudBase);
     makeInflowBoundaryModelType(NoInflow, gasCloudBase);
     makeInflowBoundaryModelType(FreeStream, gasCloudBase);
+    makeInflowBoundaryModelType(PatchInflow, gasCloudBase);
 }
 
 
