@@ -29,8 +29,8 @@ face is known from its (y, z).  Checks:
 - the step log's "Simulators inserted through nozzle = step / total"
   equals the number of simulators in the domain.
 - bad input: unsorted rows, a face outside the rows' r range, a row of
-  5 entries, fractions not summing to 1, an unknown patch: FatalIOError
-  naming the file, keyword and value.
+  5 entries, T < 0 in a row, fractions not summing to 1, an unknown
+  patch: FatalIOError naming the file, keyword and value.
 """
 
 import math
@@ -96,7 +96,9 @@ PatchInflowCoeffs
     nozzle
     {
         composition { H2O 0.75; Ar 0.25; }
-        profile %s;
+        coordinate r;
+        axis (1 0 0);
+        table %s;
     }
 }
 typeIdList (H2O Ar);
@@ -238,11 +240,13 @@ def bad_case(meshed, name, rows=None, edit=None):
 
 @pytest.mark.parametrize("name, rows, edit, texts", [
     ("unsorted", [profile_rows()[i] for i in (0, 2, 1)], None,
-     ("profile", "sorted by r")),
+     ("table", "row 2: position 0.007 after 0.014", "strictly increasing")),
     ("short", profile_rows((0, 7e-3, 10e-3)), None,
-     ("profile", "face centre of patch nozzle", "[0, 0.01]")),
+     ("table", "face centre of patch nozzle", "[0, 0.01]")),
     ("fiveColumns", [row[:5] for row in profile_rows()], None,
-     ("profile", "rows of 6")),
+     ("table", "row 0: 5 columns", "6 (s n T Ux Uy Uz)")),
+    ("hot", [row[:2] + (-1,) + row[3:] for row in profile_rows()], None,
+     ("table", "row 0: T = -1", "T in (0, inf)")),
     ("fractions", None, ("PatchInflowCoeffs/nozzle/composition/Ar", 0.5),
      ("composition", "1.25", "summing to 1")),
     ("unknownPatch", None, ("PatchInflowCoeffs/nozzel", "{ composition { H2O 1; } n 1; T 1; U (0 0 0); }"),

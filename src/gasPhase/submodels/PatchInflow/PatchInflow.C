@@ -4,6 +4,7 @@
 
 #include "PatchInflow.H"
 #include "inputChecks.H"
+#include "coordinateTable.H"
 #include "polyMeshTetDecomposition.H"
 #include "physicoChemicalConstants.H"
 #include "mathematicalConstants.H"
@@ -63,7 +64,7 @@ Foam::PatchInflow<CloudType>::readPatch
 
     // State at each face centre
     const label nFaces = bm[ip.patchi].size();
-    if (dict.found("profile"))
+    if (dict.found("table") || dict.found("file"))
     {
         readProfile(dict, ip);
     }
@@ -87,83 +88,38 @@ void Foam::PatchInflow<CloudType>::readProfile
     inflowPatch& ip
 ) const
 {
-    using namespace inputChecks;
-
-    const List<scalarList> rows(dict.get<List<scalarList>>("profile"));
-    if (rows.size() < 2)
-    {
-        outOfRange(dict, "profile", rows.size(), "at least 2 rows");
-    }
-    forAll(rows, i)
-    {
-        const scalarList& row = rows[i];
-        if (row.size() != 6)
-        {
-            outOfRange(dict, "profile", row, "rows of 6: (r n T Ux Uy Uz)");
-        }
-        if (!(row[0] >= 0) || (i > 0 && !(row[0] > rows[i-1][0])))
-        {
-            outOfRange
-            (
-                dict, "profile", row,
-                "rows sorted by r, strictly increasing, r >= 0"
-            );
-        }
-        if (!(row[1] >= 0) || !(row[2] > 0))
-        {
-            outOfRange(dict, "profile", row, "n >= 0 and T > 0 in each row");
-        }
-    }
-
-    const point origin(dict.getOrDefault<point>("origin", Zero));
-    const vector axisDir(dict.getOrDefault<vector>("axis", vector(1, 0, 0)));
-    if (!(mag(axisDir) > 0))
-    {
-        outOfRange(dict, "axis", axisDir, "a non-zero vector");
-    }
-    const vector a(axisDir/mag(axisDir));
+    const coordinateTable table
+    (
+        dict, labelList({6}), "6 (s n T Ux Uy Uz)"
+    );
+    table.checkNonNegative(1, "n");
+    table.checkPositive(2, "T");
 
     const polyPatch& pp = this->owner().mesh().boundaryMesh()[ip.patchi];
     ip.n.setSize(pp.size());
     ip.T.setSize(pp.size());
     ip.U.setSize(pp.size());
 
-    const scalar rMin = rows.first()[0];
-    const scalar rMax = rows.last()[0];
-    const scalar slack = 1e-9*rMax;
-
     forAll(pp, facei)
     {
-        const vector d(pp.faceCentres()[facei] - origin);
-        const scalar r = mag(d - (d & a)*a);
-        if (r < rMin - slack || r > rMax + slack)
+        const scalar s = table.coordinate(pp.faceCentres()[facei]);
+        if (!table.clamp() && !table.inRange(s))
         {
-            outOfRange
+            inputChecks::outOfRange
             (
-                dict, "profile", r,
-                "a face centre of patch " + pp.name() + " at this r: the "
-                "rows must cover [" + Foam::name(rMin) + ", "
-              + Foam::name(rMax) + "]"
+                dict, "table", s,
+                "the coordinate of a face centre of patch " + pp.name()
+              + "; the rows cover [" + Foam::name(table.sMin()) + ", "
+              + Foam::name(table.sMax()) + "] (or set outOfBounds clamp)"
             );
         }
-
-        // Linear interpolation between the rows about r
-        label i = 1;
-        while (i < rows.size() - 1 && rows[i][0] < r)
-        {
-            ++i;
-        }
-        const scalarList& lo = rows[i-1];
-        const scalarList& hi = rows[i];
-        const scalar w = min(max((r - lo[0])/(hi[0] - lo[0]), 0), 1);
-        auto at = [&](const label col)
-        {
-            return (1 - w)*lo[col] + w*hi[col];
-        };
-        ip.n[facei] = at(1);
-        ip.T[facei] = at(2);
-        ip.U[facei] = vector(at(3), at(4), at(5));
+        ip.n[facei] = table.value(s, 1);
+        ip.T[facei] = table.value(s, 2);
+        ip.U[facei] = table.vectorValue(s, 3);
     }
+
+    Info<< "    PatchInflow: " << pp.name() << ", table of "
+        << table.describe().c_str() << endl;
 }
 
 
