@@ -502,6 +502,7 @@ def test_adaptive_fractions(KnSwitch, fm):
 
 @pytest.mark.parametrize("entry,value,texts", [
     ("subModels/adaptiveCoeffs/KnSwitch", 0, ("KnSwitch", "0", "(0, inf)")),
+    ("subModels/adaptiveCoeffs/KnSwitch", -5, ("KnSwitch", "-5", "(0, inf)")),
     ("subModels/adaptiveCoeffs/averagingSteps", 0, ("averagingSteps", "0")),
 ])
 def test_adaptive_bad_input(entry, value, texts):
