@@ -36,18 +36,37 @@ void Foam::OneWayCoupling<CloudType>::parcelForcesAndHeat(gasCloud* gasPtr)
     const scalar Wg = gas.nParticle();
     const auto& occupancy = gas.cellOccupancy();
 
-    vector dP;
-    scalar dE;
+    // The parcels grouped by cell (stable: in cloud order within a cell),
+    // so that each cell's simulators are gathered once for all its parcels
+    DynamicList<parcelType*> parcels(cloud.size());
+    DynamicList<label> cells(cloud.size());
     for (parcelType& p : cloud)
     {
-        const label celli = p.cell();
+        parcels.append(&p);
+        cells.append(p.cell());
+    }
+    labelList order;
+    sortedOrder(cells, order);
+
+    vector dP;
+    scalar dE;
+    label gathered = -1;
+    for (const label i : order)
+    {
+        parcelType& p = *parcels[i];
+        const label celli = cells[i];
         const auto& inCell = occupancy[celli];
         if (inCell.empty())
         {
             continue;
         }
+        if (celli != gathered)
+        {
+            sums_->gather(inCell);
+            gathered = celli;
+        }
 
-        sums_->apply(p, inCell, Wg, V[celli], dt, dP, dE);
+        sums_->apply(p, Wg, V[celli], dt, dP, dE);
         this->addExchange(celli, dP, dE);
     }
 }
