@@ -36,25 +36,13 @@ void Foam::OneWayCoupling<CloudType>::parcelForcesAndHeat(gasCloud* gasPtr)
     const scalar Wg = gas.nParticle();
     const auto& occupancy = gas.cellOccupancy();
 
-    // The parcels grouped by cell (stable: in cloud order within a cell),
-    // so that each cell's simulators are gathered once for all its parcels
-    DynamicList<parcelType*> parcels(cloud.size());
-    DynamicList<label> cells(cloud.size());
-    for (parcelType& p : cloud)
-    {
-        parcels.append(&p);
-        cells.append(p.cell());
-    }
-    labelList order;
-    sortedOrder(cells, order);
-
     vector dP;
     scalar dE;
     label gathered = -1;
-    for (const label i : order)
+    for (parcelType* pPtr : freeMolecularSums::byCell(cloud))
     {
-        parcelType& p = *parcels[i];
-        const label celli = cells[i];
+        parcelType& p = *pPtr;
+        const label celli = p.cell();
         const auto& inCell = occupancy[celli];
         if (inCell.empty())
         {
