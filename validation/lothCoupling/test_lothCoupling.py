@@ -71,9 +71,10 @@ RHO_P, CP_P, T_P0 = 1000.0, 1000.0, 200.0
 TOL = 0.005
 
 
-def make_case(name, rho_g, U, d, dt, steps, write_every, coupling="Loth"):
+def make_case(name, rho_g, U, d, dt, steps, write_every, coupling="Loth", edit=None):
     """The box without gas, one grain of diameter d at rest, Loth with a
-    prescribed uniform gas (U along x)."""
+    prescribed uniform gas (U along x); edit(case), if given, changes the
+    set-up before meshing and initialising."""
     case = foam.copy_setup(BOX, os.path.join(BUILD, name))
     os.remove(os.path.join(case, "constant", "dsmcProperties"))
     os.remove(os.path.join(case, "system", "dsmcInitialiseDict"))
@@ -93,6 +94,8 @@ def make_case(name, rho_g, U, d, dt, steps, write_every, coupling="Loth"):
     foam.set_entry(case, CONTROL, "deltaT", f"{dt:.9g}")
     foam.set_entry(case, CONTROL, "endTime", f"{steps*dt:.9g}")
     foam.set_entry(case, CONTROL, "writeInterval", write_every)
+    if edit:
+        edit(case)
     foam.run(case, "blockMesh")
     foam.run(case, "rarefiedMultiphaseInitialise")
     return case
@@ -167,26 +170,34 @@ CASES = {
 }
 
 
-@pytest.mark.parametrize("name", list(CASES))
-def test_relaxation(name):
-    rho_g, U, d, dt, steps, every = CASES[name]
-    case = make_case(name, rho_g, U, d, dt, steps, every)
+def check_against_ode(case, what, rho_g, U, d, dt, steps, every, T_g=T_G, mu=MU):
+    """Run case; its parcel's trajectory against integrate() for the gas
+    (rho_g, U, T_g, mu): largest differences below TOL of U and of
+    T_g - T_p0.  Returns (t, v) of the run."""
     foam.run(case, "rarefiedMultiphaseFoam")
     traj = trajectory(case)
     assert len(traj) == steps//every, len(traj)
     t, v, T = traj.T
 
-    ode = integrate(rho_g, U, d, steps*dt, 50*steps)
+    ode = integrate(rho_g, U, d, steps*dt, 50*steps, T_g=T_g, mu=mu)
     v_ode, T_ode = ode(t)
     err_v = np.abs(v - v_ode).max()/U
-    err_T = np.abs(T - T_ode).max()/(T_G - T_P0)
+    err_T = np.abs(T - T_ode).max()/(T_g - T_P0)
     ok = err_v < TOL and err_T < TOL
-    print(f"\n{'PASS' if ok else 'FAIL'} Loth relaxation, {name}: v/U at the end "
+    print(f"\n{'PASS' if ok else 'FAIL'} {what}: v/U at the end "
           f"{v[-1]/U:.5f} (ODE {v_ode[-1]/U:.5f}), T_p {T[-1]:.3f} K (ODE "
           f"{T_ode[-1]:.3f} K); largest difference {100*err_v:.3f} % of U, "
           f"{100*err_T:.3f} % of T_g - T_p0 (tolerance {100*TOL:g} %)")
     assert err_v < TOL, err_v
     assert err_T < TOL, err_T
+    return t, v
+
+
+@pytest.mark.parametrize("name", list(CASES))
+def test_relaxation(name):
+    rho_g, U, d, dt, steps, every = CASES[name]
+    case = make_case(name, rho_g, U, d, dt, steps, every)
+    t, v = check_against_ode(case, f"Loth relaxation, {name}", rho_g, U, d, dt, steps, every)
 
     if name == "stokes":
         tau = RHO_P*d**2/(18*MU)
@@ -241,31 +252,14 @@ def place_grain(case, y):
 
 def table_case(name, rows, inline=True, extra=()):
     """rarefiedCompressible's set-up (d = 10 um, dt = 1.2e-6 s, 600 steps)
-    with the gas from a table in y."""
+    with the grain at y = 0.2 and the gas from a table in y."""
     _, _, d, dt, steps, every = CASES["rarefiedCompressible"]
-    case = foam.copy_setup(BOX, os.path.join(BUILD, name))
-    os.remove(os.path.join(case, "constant", "dsmcProperties"))
-    os.remove(os.path.join(case, "system", "dsmcInitialiseDict"))
-    foam.set_entry(case, "system/blockMeshDict", "scale", 0.1)
-    foam.set_entry(case, "system/grainsInitialiseDict", "regions/grain/d", d)
-    place_grain(case, Y_GRAIN)
-    foam.set_entry(case, PROPS, "constantProperties/rho0", RHO_P)
-    foam.set_entry(case, PROPS, "constantProperties/Cp0", CP_P)
-    foam.set_entry(case, PROPS, "constantProperties/T0", T_P0)
-    foam.set_entry(case, PROPS, "subModels/interphaseCoupling", "Loth")
-    foam.set_entry(case, PROPS, "subModels/LothCoeffs", "{}")
-    foam.set_entry(case, PROPS, "subModels/LothCoeffs/gas", "prescribed")
-    foam.set_entry(case, PROPS, "subModels/LothCoeffs/prescribed", "{}")
-    for key, value in (("rho", 1), ("U", "(1 0 0)"), ("T", T_G), ("mu", MU),
-                       ("gamma", f"{GAMMA:.12g}"), ("R", f"{R_AR:.9g}")):
-        foam.set_entry(case, PROPS, "subModels/LothCoeffs/prescribed/" + key, value)
-    use_table(case, rows, inline=inline, extra=extra)
-    foam.set_entry(case, CONTROL, "deltaT", f"{dt:.9g}")
-    foam.set_entry(case, CONTROL, "endTime", f"{steps*dt:.9g}")
-    foam.set_entry(case, CONTROL, "writeInterval", every)
-    foam.run(case, "blockMesh")
-    foam.run(case, "rarefiedMultiphaseInitialise")
-    return case
+
+    def edit(case):
+        place_grain(case, Y_GRAIN)
+        use_table(case, rows, inline=inline, extra=extra)
+
+    return make_case(name, 1.0, 1.0, d, dt, steps, every, edit=edit)
 
 
 @pytest.mark.parametrize("variant", ["inline", "file_clamped"])
@@ -286,25 +280,11 @@ def test_prescribed_table(variant):
         rows, extra = TABLE[:2], (("outOfBounds", "clamp"),)
         y = TABLE[1][0]
     case = table_case("table_" + variant, rows, inline=(variant == "inline"), extra=extra)
-    foam.run(case, "rarefiedMultiphaseFoam")
-    traj = trajectory(case)
-    assert len(traj) == steps//every, len(traj)
-    t, v, T = traj.T
-
     col = np.array(rows).T
     rho_g, U, T_g, mu = (float(np.interp(y, col[0], col[i])) for i in (1, 2, 5, 6))
-    ode = integrate(rho_g, U, d, steps*dt, 50*steps, T_g=T_g, mu=mu)
-    v_ode, T_ode = ode(t)
-    err_v = np.abs(v - v_ode).max()/U
-    err_T = np.abs(T - T_ode).max()/(T_g - T_P0)
-    ok = err_v < TOL and err_T < TOL
-    print(f"\n{'PASS' if ok else 'FAIL'} Loth, prescribed table ({variant}), gas at y = {y:g}: "
-          f"rho {rho_g:.4g}, U {U:.4g}, T {T_g:.4g}, mu {mu:.4g}; v/U at the end "
-          f"{v[-1]/U:.5f} (ODE {v_ode[-1]/U:.5f}), T_p {T[-1]:.3f} K (ODE {T_ode[-1]:.3f} K); "
-          f"largest difference {100*err_v:.3f} % of U, {100*err_T:.3f} % of T_g - T_p0 "
-          f"(tolerance {100*TOL:g} %)")
-    assert err_v < TOL, err_v
-    assert err_T < TOL, err_T
+    check_against_ode(case, f"Loth, prescribed table ({variant}), gas at y = {y:g}: rho "
+                      f"{rho_g:.4g}, U {U:.4g}, T {T_g:.4g}, mu {mu:.4g}",
+                      rho_g, U, d, dt, steps, every, T_g=T_g, mu=mu)
 
 
 def test_prescribed_table_outside():
