@@ -33,12 +33,18 @@ SPEC.md 4.5, 4.6), end to end on the solver.
    equals Loth's at the cell's realized state (test_loth_from_dsmc).
 4. adaptive: regime fractions (log and fields) for two grains on either
    side of KnSwitch, and KnSwitch / averagingSteps input checks.
+5. Loth with the prescribed gas as a table (prescribedGas): relaxation to
+   the state interpolated at the grain's position (inline table, and a
+   table file with outOfBounds clamp), a grain outside the table (error),
+   and bad tables (unsorted, column count, rho/T/mu <= 0, one row,
+   coordinate, outOfBounds, missing file).
 """
 
 import math
 import os
 import re
 import shutil
+import subprocess
 
 import numpy as np
 import pytest
@@ -47,7 +53,7 @@ from rmf import foam
 
 import sys
 sys.path.insert(0, os.path.join(foam.PROJECT_DIR, "validation", "dragLaws"))
-from reference import loth_cd  # noqa: E402
+from reference import loth_cd, loth_cl  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 BOX = os.path.join(foam.PROJECT_DIR, "validation", "freeMolecularCoupling", "box")
@@ -65,9 +71,10 @@ RHO_P, CP_P, T_P0 = 1000.0, 1000.0, 200.0
 TOL = 0.005
 
 
-def make_case(name, rho_g, U, d, dt, steps, write_every, coupling="Loth"):
+def make_case(name, rho_g, U, d, dt, steps, write_every, coupling="Loth", edit=None):
     """The box without gas, one grain of diameter d at rest, Loth with a
-    prescribed uniform gas (U along x)."""
+    prescribed uniform gas (U along x); edit(case), if given, changes the
+    set-up before meshing and initialising."""
     case = foam.copy_setup(BOX, os.path.join(BUILD, name))
     os.remove(os.path.join(case, "constant", "dsmcProperties"))
     os.remove(os.path.join(case, "system", "dsmcInitialiseDict"))
@@ -87,6 +94,8 @@ def make_case(name, rho_g, U, d, dt, steps, write_every, coupling="Loth"):
     foam.set_entry(case, CONTROL, "deltaT", f"{dt:.9g}")
     foam.set_entry(case, CONTROL, "endTime", f"{steps*dt:.9g}")
     foam.set_entry(case, CONTROL, "writeInterval", write_every)
+    if edit:
+        edit(case)
     foam.run(case, "blockMesh")
     foam.run(case, "rarefiedMultiphaseInitialise")
     return case
@@ -122,20 +131,21 @@ def nusselt(re, kn):
     return nu_c/(1 + nu_c/nu_fm)
 
 
-def integrate(rho_g, U, d, t_end, n):
-    """RK4 of (v, T_p) from (0, T_P0) to t_end in n steps; returns a
-    function of t by linear interpolation on the fine grid."""
+def integrate(rho_g, U, d, t_end, n, T_g=T_G, mu=MU):
+    """RK4 of (v, T_p) from (0, T_P0) to t_end in n steps, gas (rho_g, U
+    along x, T_g, mu); returns a function of t by linear interpolation on
+    the fine grid."""
     mp = RHO_P*math.pi*d**3/6
-    kappa = MU*GAMMA*R_AR/((GAMMA - 1)*PR)
-    kn = MU/(rho_g*d)*math.sqrt(math.pi/(2*R_AR*T_G))
+    kappa = mu*GAMMA*R_AR/((GAMMA - 1)*PR)
+    kn = mu/(rho_g*d)*math.sqrt(math.pi/(2*R_AR*T_g))
 
     def rhs(y):
         v, T = y
         v0 = U - v
-        re = rho_g*abs(v0)*d/MU
-        ma = abs(v0)/math.sqrt(GAMMA*R_AR*T_G)
-        dv = 0.75*loth_cd(re, ma, GAMMA, T/T_G)*rho_g*abs(v0)*v0/(RHO_P*d) if re > 0 else 0
-        dT = nusselt(re, kn)*math.pi*d*kappa*(T_G - T)/(mp*CP_P)
+        re = rho_g*abs(v0)*d/mu
+        ma = abs(v0)/math.sqrt(GAMMA*R_AR*T_g)
+        dv = 0.75*loth_cd(re, ma, GAMMA, T/T_g)*rho_g*abs(v0)*v0/(RHO_P*d) if re > 0 else 0
+        dT = nusselt(re, kn)*math.pi*d*kappa*(T_g - T)/(mp*CP_P)
         return np.array([dv, dT])
 
     h = t_end/n
@@ -160,26 +170,34 @@ CASES = {
 }
 
 
-@pytest.mark.parametrize("name", list(CASES))
-def test_relaxation(name):
-    rho_g, U, d, dt, steps, every = CASES[name]
-    case = make_case(name, rho_g, U, d, dt, steps, every)
+def check_against_ode(case, what, rho_g, U, d, dt, steps, every, T_g=T_G, mu=MU):
+    """Run case; its parcel's trajectory against integrate() for the gas
+    (rho_g, U, T_g, mu): largest differences below TOL of U and of
+    T_g - T_p0.  Returns (t, v) of the run."""
     foam.run(case, "rarefiedMultiphaseFoam")
     traj = trajectory(case)
     assert len(traj) == steps//every, len(traj)
     t, v, T = traj.T
 
-    ode = integrate(rho_g, U, d, steps*dt, 50*steps)
+    ode = integrate(rho_g, U, d, steps*dt, 50*steps, T_g=T_g, mu=mu)
     v_ode, T_ode = ode(t)
     err_v = np.abs(v - v_ode).max()/U
-    err_T = np.abs(T - T_ode).max()/(T_G - T_P0)
+    err_T = np.abs(T - T_ode).max()/(T_g - T_P0)
     ok = err_v < TOL and err_T < TOL
-    print(f"\n{'PASS' if ok else 'FAIL'} Loth relaxation, {name}: v/U at the end "
+    print(f"\n{'PASS' if ok else 'FAIL'} {what}: v/U at the end "
           f"{v[-1]/U:.5f} (ODE {v_ode[-1]/U:.5f}), T_p {T[-1]:.3f} K (ODE "
           f"{T_ode[-1]:.3f} K); largest difference {100*err_v:.3f} % of U, "
           f"{100*err_T:.3f} % of T_g - T_p0 (tolerance {100*TOL:g} %)")
     assert err_v < TOL, err_v
     assert err_T < TOL, err_T
+    return t, v
+
+
+@pytest.mark.parametrize("name", list(CASES))
+def test_relaxation(name):
+    rho_g, U, d, dt, steps, every = CASES[name]
+    case = make_case(name, rho_g, U, d, dt, steps, every)
+    t, v = check_against_ode(case, f"Loth relaxation, {name}", rho_g, U, d, dt, steps, every)
 
     if name == "stokes":
         tau = RHO_P*d**2/(18*MU)
@@ -189,6 +207,178 @@ def test_relaxation(name):
         print(f"{'PASS' if ok else 'FAIL'} Stokes exponential (tau = {tau:.5g} s): largest "
               f"difference {100*err:.3f} % of U (tolerance {100*TOL:g} %)")
         assert err < TOL, err
+
+
+# ---------------------------------------------------------------------------
+# Prescribed gas as a table (prescribedGas)
+
+# Rows (y rho Ux Uy Uz T mu) around the grain, which sits at y = 0.2 in the
+# one cell (centre y = 0): the state there is half-way between the last two
+# rows, far from the cell centre's (second row), so evaluating at the cell
+# centre instead of the parcel would fail by ~15 %.
+TABLE = [(-0.4, 0.10, 100.0, 0, 0, 250.0, 2.0e-5),
+         (0.0, 0.20, 150.0, 0, 0, 280.0, 2.2e-5),
+         (0.4, 0.40, 200.0, 0, 0, 340.0, 2.5e-5)]
+Y_GRAIN = 0.2
+
+
+def table_text(rows):
+    return "(" + " ".join("(" + " ".join(f"{v:.9g}" for v in r) + ")" for r in rows) + ")"
+
+
+def use_table(case, rows, coordinate="y", inline=True, extra=()):
+    """Replace the uniform prescribed state of case by a table (mu a 7th
+    column when the rows have 7 entries), the grain placed at y = 0.2."""
+    pre = "subModels/LothCoeffs/prescribed/"
+    for key in ("rho", "U", "T") + (("mu",) if len(rows[0]) == 7 else ()):
+        subprocess.run(["foamDictionary", "-entry", pre + key, "-remove", PROPS],
+                       cwd=case, check=True, stdout=subprocess.DEVNULL)
+    foam.set_entry(case, PROPS, pre + "coordinate", coordinate)
+    if inline:
+        foam.set_entry(case, PROPS, pre + "table", table_text(rows))
+    else:
+        with open(os.path.join(case, "constant", "gasTable"), "w") as f:
+            f.write("// y rho Ux Uy Uz T mu\n" + table_text(rows).replace(") (", ")\n(") + "\n")
+        foam.set_entry(case, PROPS, pre + "file", '"$FOAM_CASE/constant/gasTable"')
+    for key, value in extra:
+        foam.set_entry(case, PROPS, pre + key, value)
+
+
+def place_grain(case, y):
+    init = "system/grainsInitialiseDict"
+    foam.set_entry(case, init, "regions/grain/min", f"(-1e-5 {y - 1e-5:.9g} -1e-5)")
+    foam.set_entry(case, init, "regions/grain/max", f"(1e-5 {y + 1e-5:.9g} 1e-5)")
+
+
+def table_case(name, rows, inline=True, extra=()):
+    """rarefiedCompressible's set-up (d = 10 um, dt = 1.2e-6 s, 600 steps)
+    with the grain at y = 0.2 and the gas from a table in y."""
+    _, _, d, dt, steps, every = CASES["rarefiedCompressible"]
+
+    def edit(case):
+        place_grain(case, Y_GRAIN)
+        use_table(case, rows, inline=inline, extra=extra)
+
+    return make_case(name, 1.0, 1.0, d, dt, steps, every, edit=edit)
+
+
+@pytest.mark.parametrize("variant", ["inline", "file_clamped"])
+def test_prescribed_table(variant):
+    """A grain released at rest at y = 0.2 in a gas tabulated in y (rho, U
+    along x, T and mu all varying) moves along x only, so it relaxes to
+    the state interpolated at y = 0.2: the solver's trajectory against the
+    RK4 of the same ODEs as test_relaxation at that state, interpolated
+    here with numpy.interp (independent of OpenFOAM's interpolationTable).
+    file_clamped: the same rows from a file, but only those with y <= 0
+    and outOfBounds clamp, so the grain (above the table) sees the last
+    row.  Tolerance 0.5 % as test_relaxation (same step/tau)."""
+    _, _, d, dt, steps, every = CASES["rarefiedCompressible"]
+    if variant == "inline":
+        rows, extra = TABLE, ()
+        y = Y_GRAIN
+    else:
+        rows, extra = TABLE[:2], (("outOfBounds", "clamp"),)
+        y = TABLE[1][0]
+    case = table_case("table_" + variant, rows, inline=(variant == "inline"), extra=extra)
+    col = np.array(rows).T
+    rho_g, U, T_g, mu = (float(np.interp(y, col[0], col[i])) for i in (1, 2, 5, 6))
+    check_against_ode(case, f"Loth, prescribed table ({variant}), gas at y = {y:g}: rho "
+                      f"{rho_g:.4g}, U {U:.4g}, T {T_g:.4g}, mu {mu:.4g}",
+                      rho_g, U, d, dt, steps, every, T_g=T_g, mu=mu)
+
+
+@pytest.mark.parametrize("shear", [5e4, -5e4])
+def test_lift(shear):
+    """Loth's shear lift (LothCoeffs lift true) in a prescribed simple
+    shear U_x = 175 + G (y - 0.2) (at the grain's initial y, read back),
+    rho, T, mu uniform (0.3 kg/m^3, 310 K,
+    2.35e-5 Pa s): one step from rest at y = 0.2, where v0 = (175, 0, 0),
+    |curl U| = |G|, omega* = |G| d/|v0|.  The lift impulse is
+    v_y = sign(G) C_L(Re, omega*) (pi d^2/8) rho |v0|^2 dt/m_p (towards the
+    faster gas), C_L from validation/dragLaws/reference.py (independent
+    of dragLaws); tolerance 1e-6 relative (10 written digits).  v_z stays
+    0, and v_x is the drag's alone (the lift is perpendicular)."""
+    _, _, d, dt, _, _ = CASES["rarefiedCompressible"]
+    rho, U, T, mu = 0.3, 175.0, 310.0, 2.35e-5
+    rows = [(y, rho, U + shear*(y - Y_GRAIN), 0, 0, T, mu) for y in (0.1, 0.3)]
+
+    def edit(case):
+        place_grain(case, Y_GRAIN)
+        use_table(case, rows)
+        foam.set_entry(case, PROPS, "subModels/LothCoeffs/lift", "true")
+
+    case = make_case(f"lift_{'up' if shear > 0 else 'down'}", 1.0, 1.0, d, dt, 1, 1,
+                     edit=edit)
+    foam.run(case, "rarefiedMultiphaseFoam")
+    v = single(os.path.join(case, foam.latest_time(case), "lagrangian", "grains", "U"))
+
+    # The grain's y (placed within 1e-5 of Y_GRAIN) sets the gas it sees
+    with open(os.path.join(case, "0", "lagrangian", "grains", "positions")) as f:
+        y = float(re.search(r"(?m)^\((\S+) (\S+) (\S+)\) \d+", f.read()).group(2))
+    U = U + shear*(y - Y_GRAIN)
+    mp = RHO_P*math.pi*d**3/6
+    reynolds = rho*U*d/mu
+    omega = abs(shear)*d/U
+    cl = loth_cl(reynolds, omega)
+    expected = math.copysign(cl*math.pi*d**2/8*rho*U**2*dt/mp, shear)
+    print(f"\nlift, G = {shear:g} 1/s: Re {reynolds:.3f}, omega* {omega:.4g}, C_L "
+          f"{cl:.5g}; v_y {v[1]:.6g} m/s, expected {expected:.6g}")
+    assert abs(v[1]/expected - 1) < 1e-6, (v[1], expected)
+    assert v[2] == 0
+    assert v[0] > 0
+
+
+def test_prescribed_table_outside():
+    """outOfBounds error (default): a parcel above the table stops the run
+    with a FatalError naming the table's dictionary, the parcel's
+    coordinate and the table's range."""
+    case = table_case("table_outside", TABLE[:2])
+    out = foam.run_failing(case, "rarefiedMultiphaseFoam")
+    for text in ("FOAM FATAL ERROR", "outside the prescribed gas table",
+                 "grainsProperties", "coordinate: 0.1999", "table range: [-0.4, 0]"):
+        assert text in out, (text, out[-2000:])
+
+
+BAD_TABLES = {
+    # name: rows or text, extra entries, texts the message must hold
+    "unsorted": ([TABLE[0], TABLE[2], TABLE[1]], (),
+                 ("table", "row 2: position 0 after 0.4", "strictly increasing")),
+    "columns": ([TABLE[0], TABLE[1][:5]], (),
+                ("table", "row 1: 5 columns", "6 (s rho Ux Uy Uz T) or 7")),
+    "rho": ([TABLE[0], (0.0, -1.0) + TABLE[1][2:]], (),
+            ("table", "row 1: rho = -1", "rho in (0, inf)")),
+    "T": ([TABLE[0], TABLE[1][:5] + (0.0, 2.2e-5)], (),
+          ("table", "row 1: T = 0", "T in (0, inf)")),
+    "mu": ([TABLE[0], TABLE[1][:6] + (-2e-5,)], (),
+           ("table", "row 1: mu = -2e-05", "mu in (0, inf)")),
+    "oneRow": ([TABLE[0]], (), ("table", "1 rows", "at least 2 rows")),
+    "coordinate": (TABLE, (("coordinate", "theta"),), ("coordinate", "theta", "x", "r")),
+    "outOfBounds": (TABLE, (("outOfBounds", "wrap"),), ("outOfBounds", "wrap", "clamp")),
+}
+
+
+@pytest.mark.parametrize("name", list(BAD_TABLES))
+def test_prescribed_table_bad_input(vacuum, name):
+    """Bad tables (issue 5 item 9): FatalIOError naming the file
+    (grainsProperties), the keyword, the bad value and the valid range."""
+    rows, extra, texts = BAD_TABLES[name]
+    case = foam.copy_case(vacuum, os.path.join(BUILD, "badTable_" + name))
+    use_table(case, rows, extra=extra)
+    out = foam.run_failing(case, "rarefiedMultiphaseFoam")
+    for text in ("FOAM FATAL IO ERROR", "grainsProperties") + texts:
+        assert text in out, (text, out[-2000:])
+
+
+def test_prescribed_table_bad_file(vacuum):
+    """A table file that does not exist: FatalIOError naming the keyword
+    file and the path."""
+    case = foam.copy_case(vacuum, os.path.join(BUILD, "badTable_file"))
+    use_table(case, TABLE, inline=False)
+    os.remove(os.path.join(case, "constant", "gasTable"))
+    out = foam.run_failing(case, "rarefiedMultiphaseFoam")
+    for text in ("FOAM FATAL IO ERROR", "grainsProperties", "'file'",
+                 "constant/gasTable", "a readable file"):
+        assert text in out, (text, out[-2000:])
 
 
 # ---------------------------------------------------------------------------
@@ -333,6 +523,7 @@ def test_adaptive_fractions(KnSwitch, fm):
 
 @pytest.mark.parametrize("entry,value,texts", [
     ("subModels/adaptiveCoeffs/KnSwitch", 0, ("KnSwitch", "0", "(0, inf)")),
+    ("subModels/adaptiveCoeffs/KnSwitch", -5, ("KnSwitch", "-5", "(0, inf)")),
     ("subModels/adaptiveCoeffs/averagingSteps", 0, ("averagingSteps", "0")),
 ])
 def test_adaptive_bad_input(entry, value, texts):

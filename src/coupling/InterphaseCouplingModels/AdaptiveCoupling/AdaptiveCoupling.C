@@ -85,8 +85,10 @@ void Foam::AdaptiveCoupling<CloudType>::parcelForcesAndHeat(gasCloud* gasPtr)
     typename LothCoupling<CloudType>::gasState g;
     vector dP;
     scalar dE;
-    for (parcelType& p : cloud)
+    label gathered = -1;
+    for (parcelType* pPtr : freeMolecularSums::byCell(cloud))
     {
+        parcelType& p = *pPtr;
         const label celli = p.cell();
         const scalar lambda = average.lambda(celli);
         if (!(lambda > 0))
@@ -100,7 +102,12 @@ void Foam::AdaptiveCoupling<CloudType>::parcelForcesAndHeat(gasCloud* gasPtr)
             const auto& inCell = occupancy[celli];
             if (!inCell.empty())
             {
-                sums_->apply(p, inCell, Wg, V[celli], dt, dP, dE);
+                if (celli != gathered)
+                {
+                    sums_->gather(inCell);
+                    gathered = celli;
+                }
+                sums_->apply(p, Wg, V[celli], dt, dP, dE);
                 this->addExchange(celli, dP, dE);
             }
         }

@@ -49,28 +49,7 @@ void Foam::LothCoupling<CloudType>::readCoeffs
     }
     else
     {
-        const dictionary& pd = dict.subDict("prescribed");
-        gasState& g = prescribed_;
-        g.rho = inputChecks::getPositive(pd, "rho");
-        g.U = pd.get<vector>("U");
-        g.T = inputChecks::getPositive(pd, "T");
-        g.mu = inputChecks::getPositive(pd, "mu");
-        g.gamma = pd.get<scalar>("gamma");
-        // 5/3 as written with 6 digits (1.66667) is accepted
-        if (!(g.gamma > 1 && g.gamma <= 5.0/3.0*(1 + 1e-5)))
-        {
-            inputChecks::outOfRange(pd, "gamma", g.gamma, "(1, 5/3]");
-        }
-        g.R = inputChecks::getPositive(pd, "R");
-        g.Pr = 4*g.gamma/(9*g.gamma - 5);
-        if (pd.found("Pr"))
-        {
-            g.Pr = inputChecks::getPositive(pd, "Pr");
-        }
-        Info<< "    Loth: prescribed uniform gas rho " << g.rho
-            << " U " << g.U << " T " << g.T << " mu " << g.mu
-            << " gamma " << g.gamma << " R " << g.R << " Pr " << g.Pr
-            << endl;
+        prescribed_.reset(new prescribedGas(dict.subDict("prescribed")));
     }
 }
 
@@ -112,7 +91,7 @@ void Foam::LothCoupling<CloudType>::updateGas(gasCloud* gas)
         }
         average_->add(this->gasNow());
     }
-    if (lift_)
+    if (fromDsmc_ && lift_)
     {
         updateVorticity();
     }
@@ -128,8 +107,7 @@ bool Foam::LothCoupling<CloudType>::cellGas
 {
     if (!fromDsmc_)
     {
-        g = prescribed_;
-        g.curlU = lift_ ? curlU_[celli] : vector::zero;
+        g = prescribed_->at(this->owner().mesh().C()[celli]);
         return true;
     }
 
@@ -221,7 +199,13 @@ void Foam::LothCoupling<CloudType>::parcelForcesAndHeat(gasCloud* gas)
     gasState g;
     for (parcelType& p : cloud)
     {
-        if (cellGas(p.cell(), g))
+        if (!fromDsmc_)
+        {
+            // At the parcel's position (a table varies within a cell)
+            g = prescribed_->at(p.position());
+            relax(p, g, dt);
+        }
+        else if (cellGas(p.cell(), g))
         {
             relax(p, g, dt);
         }
@@ -241,7 +225,7 @@ Foam::LothCoupling<CloudType>::LothCoupling
     InterphaseCouplingModel<CloudType>(dict, owner, typeName),
     fromDsmc_(true),
     averagingSteps_(1),
-    prescribed_(),
+    prescribed_(nullptr),
     average_(),
     lift_(false),
     curlU_()
@@ -261,7 +245,7 @@ Foam::LothCoupling<CloudType>::LothCoupling
     InterphaseCouplingModel<CloudType>(dict, owner, type),
     fromDsmc_(true),
     averagingSteps_(1),
-    prescribed_(),
+    prescribed_(nullptr),
     average_(),
     lift_(false),
     curlU_()

@@ -38,16 +38,23 @@ void Foam::OneWayCoupling<CloudType>::parcelForcesAndHeat(gasCloud* gasPtr)
 
     vector dP;
     scalar dE;
-    for (parcelType& p : cloud)
+    label gathered = -1;
+    for (parcelType* pPtr : freeMolecularSums::byCell(cloud))
     {
+        parcelType& p = *pPtr;
         const label celli = p.cell();
         const auto& inCell = occupancy[celli];
         if (inCell.empty())
         {
             continue;
         }
+        if (celli != gathered)
+        {
+            sums_->gather(inCell);
+            gathered = celli;
+        }
 
-        sums_->apply(p, inCell, Wg, V[celli], dt, dP, dE);
+        sums_->apply(p, Wg, V[celli], dt, dP, dE);
         this->addExchange(celli, dP, dE);
     }
 }

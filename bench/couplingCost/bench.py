@@ -1,0 +1,223 @@
+#!/usr/bin/python3
+"""Cost of the gas-grain coupling models against the DSMC step.
+
+Case: validation/freeMolecularCoupling/box (0.1 x 0.08 x 0.08 m, periodic
+in every direction, argon at rest, n = 1e20 m^-3, 300 K, deltaT = 1e-5 s)
+cut into --cells^3 cells (default 4^3 = 64), with nEquivalentParticles set
+for --simulators gas simulators per cell (default 100) and --parcels
+parcels per cell (default 50; one grain each, d = 10 um, the box's heavy
+grains, so that every run does the same work every step), spread
+uniformly over the box.  The case is meshed and initialised once.
+
+Runs (each serially on one rank, on a fresh copy, wall time around the
+whole process):
+    gas       constant/grainsProperties removed: the DSMC step alone
+    solids    constant/dsmcProperties removed, interphaseCoupling none:
+              the solid phase alone in vacuum
+    <model>   gas + grains with interphaseCoupling <model>, for each model
+              of MODELS (none, oneWay, Loth with gas dsmc, adaptive)
+and, to take start-up and the final write out, the same gas, solids and
+none runs over 1 step (gas0, solids0, none0).  One repetition runs all of
+them in turn; the repetitions alternate, so the machine's load falls on all
+alike.  From the minimum time of each over the repetitions (CPU time
+user+sys, the figure to trust on a shared machine, and wall time), per
+step (N = --steps):
+
+    DSMC step alone        t_gas    = (T_gas - T_gas0)/(N - 1)
+    solid phase alone      t_solids = (T_solids - T_solids0)/(N - 1)
+    none's sampling pass   (T_none - T_none0)/(N - 1) - t_gas - t_solids
+    coupling cost ratio    r_model  = (T_model - T_none)/(N t_gas)
+
+i.e. r_model is the time the coupling model adds to a step over none
+(which runs the solid phase and the per-step lambda sampling pass) divided
+by the time of the DSMC step.  Target (issue 5 item 8): the coupling "no
+more than comparable to the DSMC step", ratio <= 1; a ratio above is
+printed as MISSES TARGET.  oneWay's sum is O(simulators x parcels) per
+cell, so its ratio grows with the parcels per cell.  Exit status 0 unless
+a run fails.
+
+Add a model by adding its name to MODELS (and its <model>Coeffs entries
+to COEFFS if it needs any); a model the solver does not know is skipped
+with a message.
+
+Run from the project directory:
+
+    . etc/bashrc && bench/couplingCost/bench.py [--cells C] [--simulators S]
+        [--parcels P] [--steps N] [--repeat R] [--models M ...]
+"""
+
+import argparse
+import os
+import resource
+import shutil
+import subprocess
+import sys
+import time
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                "..", "..", "src", "python"))
+
+from rmf import foam  # noqa: E402
+
+# The coupling models timed, in order; extend here
+MODELS = ["none", "oneWay", "Loth", "adaptive"]
+# <model>Coeffs entries a model needs
+COEFFS = {"Loth": {"gas": "dsmc"}}
+
+TARGET = 1.0
+BOX = os.path.join(foam.PROJECT_DIR, "validation", "freeMolecularCoupling", "box")
+BUILD = os.path.join(foam.PROJECT_DIR, "build", "bench", "couplingCost")
+PROPS = "constant/grainsProperties"
+N_GAS = 1e20
+VOLUME = 0.1*0.08*0.08
+
+
+def prepare(cells, simulators, parcels):
+    """Meshed and initialised case with gas and grains."""
+    case = foam.copy_setup(BOX, os.path.join(BUILD, "init"))
+    shutil.rmtree(os.path.join(case, "0"))
+    shutil.copytree(os.path.join(foam.dsmc_tutorial("freeSpacePeriodic"), "0"),
+                    os.path.join(case, "0"))
+    mesh = os.path.join(case, "system", "blockMeshDict")
+    with open(mesh) as f:
+        text = f.read()
+    with open(mesh, "w") as f:
+        f.write(text.replace("(1 1 1) simpleGrading", f"({cells} {cells} {cells}) simpleGrading"))
+    n_cells = cells**3
+    foam.set_entry(case, "constant/dsmcProperties", "nEquivalentParticles",
+                   f"{N_GAS*VOLUME/(simulators*n_cells):.6g}")
+    init = "system/grainsInitialiseDict"
+    foam.set_entry(case, init, "regions/grain/min", "(-0.0499 -0.0399 -0.0399)")
+    foam.set_entry(case, init, "regions/grain/max", "(0.0499 0.0399 0.0399)")
+    foam.set_entry(case, init, "regions/grain/nParcels", parcels*n_cells)
+    foam.run(case, "blockMesh")
+    foam.run(case, "rarefiedMultiphaseInitialise")
+    return case
+
+
+def variant(init, name, steps, model=None, gas=True, grains=True):
+    """A fresh copy of init set up for one run."""
+    case = foam.copy_case(init, os.path.join(BUILD, name))
+    dt = float(foam.get_entry(case, "system/controlDict", "deltaT"))
+    foam.set_entry(case, "system/controlDict", "endTime", f"{steps*dt:.9g}")
+    foam.set_entry(case, "system/controlDict", "writeInterval", steps)
+    if not gas:
+        os.remove(os.path.join(case, "constant", "dsmcProperties"))
+    if not grains:
+        os.remove(os.path.join(case, PROPS))
+    if model is not None:
+        foam.set_entry(case, PROPS, "subModels/interphaseCoupling", model)
+        if model in COEFFS:
+            foam.set_entry(case, PROPS, f"subModels/{model}Coeffs", "{}")
+            for key, value in COEFFS[model].items():
+                foam.set_entry(case, PROPS, f"subModels/{model}Coeffs/{key}", value)
+    return case
+
+
+def timed(case):
+    """Wall and CPU time [s] of one solver run."""
+    cpu = resource.getrusage(resource.RUSAGE_CHILDREN)
+    start = time.perf_counter()
+    foam.run(case, "rarefiedMultiphaseFoam")
+    wall = time.perf_counter() - start
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return wall, after.ru_utime + after.ru_stime - cpu.ru_utime - cpu.ru_stime
+
+
+def known(init, model):
+    """Whether the solver knows the coupling model (a 1-step run)."""
+    case = variant(init, f"probe_{model}", 1, model=model)
+    try:
+        foam.run(case, "rarefiedMultiphaseFoam")
+        return True
+    except subprocess.CalledProcessError as error:
+        if "Unknown" in (error.output or "") and model in (error.output or ""):
+            return False
+        raise
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("--cells", type=int, default=4, help="cells per direction")
+    parser.add_argument("--simulators", type=int, default=100, help="per cell")
+    parser.add_argument("--parcels", type=int, default=50, help="per cell")
+    parser.add_argument("--steps", type=int, default=200)
+    parser.add_argument("--repeat", type=int, default=3)
+    parser.add_argument("--models", nargs="+", default=MODELS)
+    args = parser.parse_args()
+    if "FOAM_TUTORIALS" not in os.environ:
+        sys.exit("bench couplingCost: no OpenFOAM environment (. etc/bashrc first)")
+    for name in [n for n in os.environ if n.startswith(("OMPI_", "PMIX_"))]:
+        del os.environ[name]
+
+    init = prepare(args.cells, args.simulators, args.parcels)
+    models = []
+    for model in args.models:
+        if known(init, model):
+            models.append(model)
+        else:
+            print(f"bench couplingCost: skipping {model}: the solver does not know it")
+    if "none" not in models:
+        models.insert(0, "none")
+
+    N = args.steps
+    runs = {"gas0": dict(steps=1, grains=False, model=None),
+            "none0": dict(steps=1, model="none"),
+            "solids0": dict(steps=1, gas=False, model="none"),
+            "gas": dict(steps=N, grains=False, model=None),
+            "solids": dict(steps=N, gas=False, model="none")}
+    runs.update({m: dict(steps=N, model=m) for m in models})
+    print(f"bench couplingCost: {args.cells}^3 cells, {args.simulators} simulators and "
+          f"{args.parcels} parcels per cell, {N} steps, {args.repeat} repetitions, "
+          f"serial, in {BUILD}; load average {os.getloadavg()[0]:.2f}")
+
+    walls = {name: [] for name in runs}
+    cpus = {name: [] for name in runs}
+    for rep in range(1, args.repeat + 1):
+        line = []
+        for name, opts in runs.items():
+            case = variant(init, f"{name}{rep}", **opts)
+            wall, cpu = timed(case)
+            walls[name].append(wall)
+            cpus[name].append(cpu)
+            line.append(f"{name} {wall:.2f}/{cpu:.2f}")
+        print(f"  repetition {rep} (wall/CPU s): " + ", ".join(line), flush=True)
+
+    for metric, values in (("CPU (user+sys)", cpus), ("wall", walls)):
+        report(metric, {name: min(v) for name, v in values.items()}, models, args)
+
+
+def report(metric, T, models, args):
+    """Per-step costs and ratios from the minimum times T of each run."""
+    N = args.steps
+    gas = (T["gas"] - T["gas0"])/(N - 1)
+    solids = (T["solids"] - T["solids0"])/(N - 1)
+    none = (T["none"] - T["none0"])/(N - 1)
+    sampling = none - gas - solids
+    print(f"  {metric} times, per step: DSMC step alone {1e3*gas:.3f} ms "
+          f"({args.simulators*args.cells**3} simulators); solid phase alone "
+          f"{1e3*solids:.3f} ms ({args.parcels*args.cells**3} parcels); none (gas + "
+          f"grains) {1e3*none:.3f} ms, so none's extra over gas + solids alone (the "
+          f"lambda sampling pass) {1e3*sampling:.3f} ms = {sampling/gas:.3f} DSMC steps")
+    summary = []
+    for model in models:
+        if model == "none":
+            continue
+        ratio = (T[model] - T["none"])/(N*gas)
+        verdict = " MISSES TARGET" if ratio > TARGET else ""
+        print(f"    {model}: {1e3*(T[model] - T['none'])/N:.3f} ms/step over none, "
+              f"ratio to the DSMC step {ratio:.3f}{verdict}")
+        summary.append(f"{model} {ratio:.3f}{verdict}")
+    print(f"bench couplingCost ({metric}): coupling cost / DSMC step (target <= "
+          f"{TARGET:g}): " + ", ".join(summary)
+          + f"; none's sampling pass {sampling/gas:.3f}")
+
+
+if __name__ == "__main__":
+    try:
+        main()
+    except (subprocess.CalledProcessError, RuntimeError, OSError) as error:
+        print(f"bench couplingCost: FAILED: {error}", file=sys.stderr)
+        if getattr(error, "output", None):
+            print(error.output, file=sys.stderr)
+        sys.exit(1)
