@@ -19,6 +19,19 @@ Foam::OneWayCoupling<CloudType>::OneWayCoupling
 {}
 
 
+template<class CloudType>
+Foam::OneWayCoupling<CloudType>::OneWayCoupling
+(
+    const dictionary& dict,
+    CloudType& owner,
+    const word& type
+)
+:
+    InterphaseCouplingModel<CloudType>(dict, owner, type),
+    sums_()
+{}
+
+
 // * * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * //
 
 template<class CloudType>
