@@ -16,6 +16,12 @@ randomSeed).
          steps), c_p = 400 J/kg/K, T_p0 = 500 K, v_p0 = (-300 0 0) m/s,
          eps = 0, alpha_T = 1: M_s = 2.12e-9 kg (half the gas), heat
          capacity C_s = M_s c_p = 0.64 C_g.
+  Runs: twoWayDirect and twoWayIndirect (averagingSteps 2) as above, and
+  twoWayDirect with nitrogen (zeta = 2, Larsen-Borgnakke), eps = 0.1,
+  alpha_T = 0.8, so that all three re-emission branches and the
+  re-sampled internal energy are exercised (C_g = (3 + zeta)/2 k n V;
+  T_g is the translational temperature, rotation being in equilibrium
+  with it at the end).
   dt = 1e-5 s, 700 steps, written every 100.  Free-molecular rates at the
   start (SPEC.md 4.2, Epstein-like): the slip decays at ~1e3 /s, the
   temperature gap at (1 + C_s/C_g) pi R^2 n <c> 2k/(m_p c_p) ~ 700 /s, so
@@ -85,7 +91,8 @@ GRAINS = "system/grainsInitialiseDict"
 CONTROL = "system/controlDict"
 
 K = 1.380649e-23
-M_AR = 66.3e-27
+MASS = {"Ar": 66.3e-27, "N2": 46.5e-27}
+ZETA = {"Ar": 0, "N2": 2}
 N_GAS, T_GAS, U_GAS = 1e20, 300.0, 200.0
 W_GAS = 1.6e12
 V_CELL = 0.1*0.08*0.08
@@ -97,14 +104,22 @@ GAIN = "Gas gain from grains: momentum, energy, sums of squares"
 COUNTS = "Gas-grain candidates, collisions, since start, largest probability"
 
 
-def make_case(name, coupling, coeffs=None, n_gas=N_GAS, steps=STEPS):
-    """The box with argon and the grains above, meshed and filled."""
+def make_case(name, coupling, coeffs=None, n_gas=N_GAS, steps=STEPS, species="Ar",
+              eps=0.0, alpha=1.0):
+    """The box with one gas species and the grains above, meshed and
+    filled."""
     case = foam.copy_setup(BOX, os.path.join(BUILD, name))
     shutil.rmtree(os.path.join(case, "0"))
     shutil.copytree(os.path.join(foam.dsmc_tutorial("freeSpacePeriodic"), "0"),
                     os.path.join(case, "0"))
     foam.set_entry(case, GAS, "nEquivalentParticles", W_GAS*n_gas/N_GAS)
-    foam.set_entry(case, FILL, "numberDensities/Ar", f"{n_gas:g}")
+    if species != "Ar":
+        foam.set_entry(case, GAS, "typeIdList", f"({species})")
+        subprocess.run(["foamDictionary", "-entry", "numberDensities/Ar", "-remove", FILL],
+                       cwd=case, check=True, stdout=subprocess.DEVNULL)
+    foam.set_entry(case, FILL, f"numberDensities/{species}", f"{n_gas:g}")
+    foam.set_entry(case, PROPS, "constantProperties/specularFraction", eps)
+    foam.set_entry(case, PROPS, "constantProperties/thermalAccommodation", alpha)
     foam.set_entry(case, FILL, "temperature", T_GAS)
     foam.set_entry(case, FILL, "velocity", f"({U_GAS:g} 0 0)")
     foam.set_entry(case, PROPS, "constantProperties/T0", T_P0)
@@ -134,18 +149,19 @@ def parcel_list(case, time, cloud, name, n):
     return np.broadcast_to(values, (n,) + values.shape[1:]) if len(values) != n else values
 
 
-def state(case, time):
-    """Totals and phase means of gas and grains at a write time."""
+def state(case, time, m_g):
+    """Totals and phase means of gas (molecular mass m_g) and grains at
+    a write time."""
     c = foam.read_list(os.path.join(case, time, "lagrangian", "dsmc", "U"))
     ei = parcel_list(case, time, "dsmc", "Ei", len(c))
     n_g = len(c)
     u_g = c.mean(axis=0)
     s = {
         "Ng": n_g,
-        "Pg": W_GAS*M_AR*c.sum(axis=0),
-        "Eg": W_GAS*(0.5*M_AR*(c**2).sum() + ei.sum()),
+        "Pg": W_GAS*m_g*c.sum(axis=0),
+        "Eg": W_GAS*(0.5*m_g*(c**2).sum() + ei.sum()),
         "Ug": u_g,
-        "Tg": M_AR*((c - u_g)**2).sum()/(3*K*n_g),
+        "Tg": m_g*((c - u_g)**2).sum()/(3*K*n_g),
     }
     U = foam.read_list(os.path.join(case, time, "lagrangian", "grains", "U"))
     n = len(U)
@@ -172,16 +188,21 @@ def report(ok, text):
 # ---------------------------------------------------------------------------
 # The two box runs (one each, shared by the checks)
 
-MODELS = {
-    "twoWayDirect": {"randomSeed": 3},
-    "twoWayIndirect": {"randomSeed": 3, "averagingSteps": 2},
+RUNS = {
+    # name: (model, coefficients, species, eps, alpha_T)
+    "twoWayDirect": ("twoWayDirect", {"randomSeed": 3}, "Ar", 0.0, 1.0),
+    "twoWayIndirect": ("twoWayIndirect", {"randomSeed": 3, "averagingSteps": 2},
+                       "Ar", 0.0, 1.0),
+    "twoWayDirect-N2": ("twoWayDirect", {"randomSeed": 4}, "N2", 0.1, 0.8),
 }
 
 
-@pytest.fixture(scope="module", params=sorted(MODELS))
+@pytest.fixture(scope="module", params=list(RUNS))
 def box(request):
-    model = request.param
-    case = make_case(f"box_{model}", model, MODELS[model])
+    model, coeffs, species, eps, alpha = RUNS[request.param]
+    m_g, zeta = MASS[species], ZETA[species]
+    case = make_case(f"box_{request.param}", model, coeffs, species=species,
+                     eps=eps, alpha=alpha)
     log = foam.run(case, "rarefiedMultiphaseFoam")
     times = foam.times(case)
     assert len(times) == STEPS//WRITE_EVERY + 1, times
@@ -189,16 +210,16 @@ def box(request):
     counts = foam.log_values(log, COUNTS)
     assert gains.shape == (STEPS, 8) and counts.shape == (STEPS, 4), \
         (gains.shape, counts.shape)
-    states = [state(case, t) for t in times]
+    states = [state(case, t, m_g) for t in times]
     s0 = states[0]
-    M_g = W_GAS*M_AR*s0["Ng"]
-    C_g = 1.5*K*W_GAS*s0["Ng"]
+    M_g = W_GAS*m_g*s0["Ng"]
+    C_g = (3 + zeta)/2*K*W_GAS*s0["Ng"]
     P0 = s0["Pg"] + s0["Ps"]
     E0 = s0["Eg"] + s0["Es"]
     M = M_g + s0["Ms"]
     U_f = P0/M
     T_f = (E0 - 0.5*M*(U_f @ U_f))/(C_g + s0["Cs"])
-    return dict(model=model, case=case, times=times, gains=gains, counts=counts,
+    return dict(model=request.param, m_g=m_g, case=case, times=times, gains=gains, counts=counts,
                 states=states, M_g=M_g, C_g=C_g, P0=P0, E0=E0, U_f=U_f, T_f=T_f)
 
 
@@ -262,7 +283,7 @@ def test_collision_rate(box):
     last = box["counts"][-WRITE_EVERY:, 1]
     measured = last.mean()
     n_s = end["Ns"]/V_CELL
-    cbar = math.sqrt(8*K*end["Tg"]/(math.pi*M_AR))
+    cbar = math.sqrt(8*K*end["Tg"]/(math.pi*box["m_g"]))
     expected = end["Ng"]*n_s*math.pi*(D/2)**2*cbar*DT
     sigma = math.sqrt(last.sum())/len(last)
     err = measured/expected - 1
