@@ -76,30 +76,21 @@ takes about two minutes on one core.
 import math
 import os
 import shutil
-import subprocess
 import sys
 
 import numpy as np
 import pytest
 
 from rmf import foam
+from rmf.box import FILL, GAS, K, MASS, PROPS, V_CELL, ZETA, copy_box, remove
 
-HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(foam.PROJECT_DIR, "validation", "dragLaws"))
 from reference import cd_fm_closed  # noqa: E402
 
-BOX = os.path.join(HERE, "box")
 BUILD = os.path.join(foam.PROJECT_DIR, "build", "validation", "freeMolecularCoupling")
-PROPS = "constant/grainsProperties"
-GAS = "constant/dsmcProperties"
-FILL = "system/dsmcInitialiseDict"
 
-K = 1.380649e-23
-MASS = {"Ar": 66.3e-27, "N2": 46.5e-27}
-ZETA = {"Ar": 0, "N2": 2}
 N_GAS = 1e20                # number density [1/m^3]
 T_GAS = 300.0               # [K]
-V_CELL = 0.1*0.08*0.08      # [m^3]
 D_GRAIN = 1e-5              # [m]
 AREA = math.pi*(D_GRAIN/2)**2
 STEPS, WRITE_EVERY = 1000, 100
@@ -107,30 +98,12 @@ TOL = 0.02                  # the issue's 2-3 %, tighter end
 N_SIGMA = 5                 # noise bound
 
 
-def remove(case, dict_path, entry):
-    """Remove one entry of a case dictionary."""
-    subprocess.run(["foamDictionary", "-entry", entry, "-remove", dict_path],
-                   cwd=case, check=True, stdout=subprocess.DEVNULL)
-
-
 def make_case(name, species="Ar", velocity=(0, 0, 0), Tp=T_GAS, eps=0.0, alpha=1.0,
           coupling="oneWay"):
     """The box case with one species and one grain, meshed and filled."""
-    case = foam.copy_setup(BOX, os.path.join(BUILD, name))
-    # Initial gas fields and boundary values of upstream's periodic
-    # dsmcFoam tutorial (same patch names)
-    shutil.rmtree(os.path.join(case, "0"))
-    shutil.copytree(os.path.join(foam.dsmc_tutorial("freeSpacePeriodic"), "0"),
-                    os.path.join(case, "0"))
-    if species != "Ar":
-        foam.set_entry(case, GAS, "typeIdList", f"({species})")
-        foam.set_entry(case, FILL, "numberDensities/" + species, f"{N_GAS:g}")
-        remove(case, FILL, "numberDensities/Ar")
+    case = copy_box(os.path.join(BUILD, name), species, N_GAS, eps, alpha, coupling)
     foam.set_entry(case, FILL, "velocity", "({:.6g} {:.6g} {:.6g})".format(*velocity))
     foam.set_entry(case, PROPS, "constantProperties/T0", Tp)
-    foam.set_entry(case, PROPS, "constantProperties/specularFraction", eps)
-    foam.set_entry(case, PROPS, "constantProperties/thermalAccommodation", alpha)
-    foam.set_entry(case, PROPS, "subModels/interphaseCoupling", coupling)
     control = "system/controlDict"
     foam.set_entry(case, control, "endTime",
                    f"{STEPS*float(foam.get_entry(case, control, 'deltaT')):.6g}")

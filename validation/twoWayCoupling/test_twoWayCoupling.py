@@ -73,29 +73,17 @@ The measured figures are printed (PASS/FAIL lines).
 
 import math
 import os
-import shutil
-import subprocess
 
 import numpy as np
 import pytest
 
 from rmf import foam
+from rmf.box import CONTROL, FILL, GAS, GRAINS, K, MASS, PROPS, V_CELL, ZETA, copy_box
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-BOX = os.path.join(foam.PROJECT_DIR, "validation", "freeMolecularCoupling", "box")
 BUILD = os.path.join(foam.PROJECT_DIR, "build", "validation", "twoWayCoupling")
-PROPS = "constant/grainsProperties"
-GAS = "constant/dsmcProperties"
-FILL = "system/dsmcInitialiseDict"
-GRAINS = "system/grainsInitialiseDict"
-CONTROL = "system/controlDict"
 
-K = 1.380649e-23
-MASS = {"Ar": 66.3e-27, "N2": 46.5e-27}
-ZETA = {"Ar": 0, "N2": 2}
 N_GAS, T_GAS, U_GAS = 1e20, 300.0, 200.0
 W_GAS = 1.6e12
-V_CELL = 0.1*0.08*0.08
 D, RHO_P, CP_P, T_P0, U_P0 = 1e-5, 1.2, 400.0, 500.0, -300.0
 N_PARCELS, W_S = 10, 3.374e5
 DT, STEPS, WRITE_EVERY = 1e-5, 700, 100
@@ -108,24 +96,13 @@ def make_case(name, coupling, coeffs=None, n_gas=N_GAS, steps=STEPS, species="Ar
               eps=0.0, alpha=1.0):
     """The box with one gas species and the grains above, meshed and
     filled."""
-    case = foam.copy_setup(BOX, os.path.join(BUILD, name))
-    shutil.rmtree(os.path.join(case, "0"))
-    shutil.copytree(os.path.join(foam.dsmc_tutorial("freeSpacePeriodic"), "0"),
-                    os.path.join(case, "0"))
+    case = copy_box(os.path.join(BUILD, name), species, n_gas, eps, alpha, coupling)
     foam.set_entry(case, GAS, "nEquivalentParticles", W_GAS*n_gas/N_GAS)
-    if species != "Ar":
-        foam.set_entry(case, GAS, "typeIdList", f"({species})")
-        subprocess.run(["foamDictionary", "-entry", "numberDensities/Ar", "-remove", FILL],
-                       cwd=case, check=True, stdout=subprocess.DEVNULL)
-    foam.set_entry(case, FILL, f"numberDensities/{species}", f"{n_gas:g}")
-    foam.set_entry(case, PROPS, "constantProperties/specularFraction", eps)
-    foam.set_entry(case, PROPS, "constantProperties/thermalAccommodation", alpha)
     foam.set_entry(case, FILL, "temperature", T_GAS)
     foam.set_entry(case, FILL, "velocity", f"({U_GAS:g} 0 0)")
     foam.set_entry(case, PROPS, "constantProperties/T0", T_P0)
     foam.set_entry(case, PROPS, "constantProperties/rho0", RHO_P)
     foam.set_entry(case, PROPS, "constantProperties/Cp0", CP_P)
-    foam.set_entry(case, PROPS, "subModels/interphaseCoupling", coupling)
     if coeffs:
         foam.set_entry(case, PROPS, f"subModels/{coupling}Coeffs", "{}")
     for key, value in (coeffs or {}).items():

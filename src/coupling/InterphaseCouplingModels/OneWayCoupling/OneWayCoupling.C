@@ -14,8 +14,7 @@ Foam::OneWayCoupling<CloudType>::OneWayCoupling
     CloudType& owner
 )
 :
-    InterphaseCouplingModel<CloudType>(dict, owner, typeName),
-    sums_()
+    OneWayCoupling<CloudType>(dict, owner, typeName)
 {}
 
 
