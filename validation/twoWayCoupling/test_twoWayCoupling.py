@@ -41,7 +41,7 @@ what the gas gained (per momentum component, and energy); their running
 sum S(t) bounds the variance of the totals' error at t (the error is a
 sum of zero-mean increments, one per collision, each of variance <= its
 square's expectation).  sigma = sqrt(S).
-1. Conservation at every write: |P_x(t) - P_x(0)| <= 5 sigma_P and
+1. Conservation at every write (and the number of simulators, exactly): |P_x(t) - P_x(0)| <= 5 sigma_P and
    |E(t) - E(0)| <= 5 sigma_E.  Not included, being far smaller: the
    explicit Euler kinetic-energy gain of the grains, sum (F dt)^2/(2 m_p)
    ~ 6e-7 J ~ 0.1 sigma_E; for twoWayIndirect (averagingSteps 2) the lag
@@ -206,6 +206,9 @@ def test_conservation(box):
     s0, end = box["states"][0], box["states"][-1]
     exchanged_P = abs(s0["Ps"][0] - s0["Ms"]*box["U_f"][0])
     exchanged_E = abs(end["Eg"] - s0["Eg"])
+    # Every simulator stays (re-emission changes velocities only)
+    assert all(s["Ng"] == s0["Ng"] for s in box["states"]), \
+        [s["Ng"] for s in box["states"]]
     worst_P = worst_E = 0.0
     ok = True
     for k, s in enumerate(box["states"][1:], 1):
