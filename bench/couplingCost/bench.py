@@ -60,7 +60,7 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
 from rmf import foam  # noqa: E402
 
 # The coupling models timed, in order; extend here
-MODELS = ["none", "oneWay", "Loth", "adaptive"]
+MODELS = ["none", "oneWay", "twoWayDirect", "twoWayIndirect", "Loth", "adaptive"]
 # <model>Coeffs entries a model needs
 COEFFS = {"Loth": {"gas": "dsmc"}}
 

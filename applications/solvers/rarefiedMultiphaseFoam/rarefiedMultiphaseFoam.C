@@ -43,7 +43,8 @@ Description
       5. two-way gas update       the coupling model's coupleGas:
                                   molecules that collided with grains
                                   take their post-collision states
-                                  (nothing for none and oneWay)
+                                  (twoWayDirect, twoWayIndirect; nothing
+                                  for the other models)
       6. sampling and writing     function objects (fieldAverage, dsmcFields)
                                   and runTime.write()
 

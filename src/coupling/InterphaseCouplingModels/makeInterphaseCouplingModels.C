@@ -15,6 +15,8 @@ Description
 #include "OneWayCoupling.H"
 #include "LothCoupling.H"
 #include "AdaptiveCoupling.H"
+#include "TwoWayDirectCoupling.H"
+#include "TwoWayIndirectCoupling.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -24,6 +26,8 @@ makeInterphaseCouplingModelType(NoInterphaseCoupling, solidCloud);
 makeInterphaseCouplingModelType(OneWayCoupling, solidCloud);
 makeInterphaseCouplingModelType(LothCoupling, solidCloud);
 makeInterphaseCouplingModelType(AdaptiveCoupling, solidCloud);
+makeInterphaseCouplingModelType(TwoWayDirectCoupling, solidCloud);
+makeInterphaseCouplingModelType(TwoWayIndirectCoupling, solidCloud);
 
 
 // ************************************************************************* //

@@ -188,6 +188,12 @@ def read_list(path):
     with open(path, "rb") as f:
         text = f.read()
     m = re.search(rb"\n(\d+)\s*\n\(", text)
+    inline = re.search(rb"\n(\d+)\((.*)\)[ \t]*\n", text)  # short lists: n(a b ...)
+    if not m and inline:
+        values = _values(inline.group(2), b"(" in inline.group(2))
+        if len(values) != int(inline.group(1)):
+            raise ValueError(f"{path}: expected {inline.group(1)} values, read {len(values)}")
+        return values
     if not m:
         m2 = re.search(rb"\n(\d+)\s*\{\s*([^}]*)\}", text)  # n{value}: all equal
         if m2:

@@ -14,7 +14,19 @@ Foam::OneWayCoupling<CloudType>::OneWayCoupling
     CloudType& owner
 )
 :
-    InterphaseCouplingModel<CloudType>(dict, owner, typeName),
+    OneWayCoupling<CloudType>(dict, owner, typeName)
+{}
+
+
+template<class CloudType>
+Foam::OneWayCoupling<CloudType>::OneWayCoupling
+(
+    const dictionary& dict,
+    CloudType& owner,
+    const word& type
+)
+:
+    InterphaseCouplingModel<CloudType>(dict, owner, type),
     sums_()
 {}
 

@@ -1,0 +1,376 @@
+/*---------------------------------------------------------------------------*\
+  rarefiedMultiphaseFoam
+\*---------------------------------------------------------------------------*/
+
+#include "TwoWayCoupling.H"
+#include "gasCloud.H"
+#include "inputChecks.H"
+#include "mathematicalConstants.H"
+#include "physicoChemicalConstants.H"
+
+// * * * * * * * * * * * * * * * Local helpers  * * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace TwoWayCouplingTools
+{
+
+//- The coefficients dictionary <type>Coeffs of subModels (null when not
+//  given), after checking its keywords against valid
+inline const dictionary& checkedCoeffs
+(
+    const dictionary& subModels,
+    const word& type,
+    const wordList& valid
+)
+{
+    const word name(type + "Coeffs");
+    if (!subModels.isDict(name))
+    {
+        return dictionary::null;
+    }
+
+    const dictionary& coeffs = subModels.subDict(name);
+    for (const entry& e : coeffs)
+    {
+        if (!valid.found(e.keyword()))
+        {
+            FatalIOErrorInFunction(coeffs)
+                << "Unknown keyword '" << e.keyword() << "' in "
+                << coeffs.name()
+                << nl << "    valid keywords: " << valid
+                << exit(FatalIOError);
+        }
+    }
+    return coeffs;
+}
+
+
+//- valid and randomSeed
+inline wordList withSeed(const wordList& valid)
+{
+    wordList all(valid);
+    all.append("randomSeed");
+    return all;
+}
+
+
+//- A unit vector normal to the unit vector a
+inline vector normalTo(const vector& a)
+{
+    // Cross with the axis least aligned with a
+    const vector axis
+    (
+        mag(a.x()) < mag(a.y())
+      ? (mag(a.x()) < mag(a.z()) ? vector(1, 0, 0) : vector(0, 0, 1))
+      : (mag(a.y()) < mag(a.z()) ? vector(0, 1, 0) : vector(0, 0, 1))
+    );
+    return normalised(a ^ axis);
+}
+
+} // End namespace TwoWayCouplingTools
+} // End namespace Foam
+
+
+// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
+
+template<class CloudType>
+Foam::scalar Foam::TwoWayCoupling<CloudType>::sigmaCrBound
+(
+    const UList<gasParcel*>& inCell,
+    const UList<partner>& partners
+)
+{
+    // |c_j - v_k| <= |c_j| + |v_k|
+    scalar cMax = 0;
+    for (const gasParcel* g : inCell)
+    {
+        cMax = max(cMax, mag(g->U()));
+    }
+
+    scalar vMax = 0;
+    scalar WSigmaMax = 0;
+    for (const partner& s : partners)
+    {
+        vMax = max(vMax, mag(s.U));
+        WSigmaMax = max(WSigmaMax, s.W*s.sigma);
+    }
+
+    return WSigmaMax*(cMax + vMax);
+}
+
+
+template<class CloudType>
+Foam::scalar Foam::TwoWayCoupling<CloudType>::equilibriumEi
+(
+    const scalar zeta,
+    const scalar T
+)
+{
+    // Gamma(zeta/2) k T: a sum of zeta/2 unit exponentials, and Z^2/2 for
+    // an odd half
+    const label nFull = label(zeta + 0.5)/2;
+    scalar e = 0;
+    for (label i = 0; i < nFull; ++i)
+    {
+        e -= log(1 - rnd_.sample01<scalar>());
+    }
+    if (label(zeta + 0.5) % 2)
+    {
+        e += 0.5*sqr(rnd_.GaussNormal<scalar>());
+    }
+    return e*constant::physicoChemical::k.value()*T;
+}
+
+
+template<class CloudType>
+void Foam::TwoWayCoupling<CloudType>::reemit(gasParcel& g, const partner& s)
+{
+    using constant::mathematical::twoPi;
+    using TwoWayCouplingTools::normalTo;
+
+    const vector w(g.U() - s.U);
+    const scalar magW = mag(w);
+    if (magW < VSMALL)
+    {
+        return;
+    }
+
+    // Outward normal at a point uniform over the cross-section hit
+    const vector wHat(w/magW);
+    const vector e1(normalTo(wHat));
+    const vector e2(wHat ^ e1);
+    const scalar sinSqr = rnd_.sample01<scalar>();
+    const scalar phi = twoPi*rnd_.sample01<scalar>();
+    const vector n
+    (
+        -sqrt(1 - sinSqr)*wHat
+      + sqrt(sinSqr)*(cos(phi)*e1 + sin(phi)*e2)
+    );
+
+    const scalar branch = rnd_.sample01<scalar>();
+    if (branch < s.eps)
+    {
+        g.U() = s.U + w - 2*(w & n)*n;
+        return;
+    }
+
+    const vector t1(normalTo(n));
+    const vector t2(n ^ t1);
+    const scalar psi = twoPi*rnd_.sample01<scalar>();
+
+    if (branch < s.eps + (1 - s.eps)*s.alpha)
+    {
+        // Accommodated: flux-weighted half-range Maxwellian at T_p
+        const label typei = g.typeId();
+        const scalar kT = constant::physicoChemical::k.value()*s.T;
+        const scalar m = mass_[typei];
+        const scalar un = sqrt(-2*kT/m*log(1 - rnd_.sample01<scalar>()));
+        const scalar ut = sqrt(kT/m);
+        g.U() =
+            s.U + un*n
+          + ut*(rnd_.GaussNormal<scalar>()*t1 + rnd_.GaussNormal<scalar>()*t2);
+        g.Ei() = equilibriumEi(zeta_[typei], s.T);
+    }
+    else
+    {
+        // Not accommodated: cosine-law direction, incident speed
+        const scalar sinSqrOut = rnd_.sample01<scalar>();
+        g.U() =
+            s.U
+          + magW
+           *(
+                sqrt(1 - sinSqrOut)*n
+              + sqrt(sinSqrOut)*(cos(psi)*t1 + sin(psi)*t2)
+            );
+    }
+}
+
+
+template<class CloudType>
+Foam::label Foam::TwoWayCoupling<CloudType>::collideCell
+(
+    const label celli,
+    const UList<gasParcel*>& inCell,
+    const UList<partner>& partners,
+    const scalar dt,
+    label& nAccepted
+)
+{
+    const label Ng = inCell.size();
+    const label Ns = partners.size();
+
+    scalar& sigmaCrMax = sigmaCrMax_[celli];
+    if (sigmaCrMax <= 0)
+    {
+        sigmaCrMax = sigmaCrBound(inCell, partners);
+    }
+
+    const scalar candidates =
+        scalar(Ng)*Ns*sigmaCrMax*dt/this->owner().mesh().V()[celli]
+      + remainder_[celli];
+    const label nCandidates = label(candidates);
+    remainder_[celli] = candidates - nCandidates;
+
+    for (label i = 0; i < nCandidates; ++i)
+    {
+        gasParcel& g = *inCell[rnd_.position<label>(0, Ng - 1)];
+        const partner& s = partners[rnd_.position<label>(0, Ns - 1)];
+
+        const scalar WSigmaCr = s.W*s.sigma*mag(g.U() - s.U);
+        if (WSigmaCr > sigmaCrMax)
+        {
+            sigmaCrMax = WSigmaCr;
+        }
+
+        if (WSigmaCr > sigmaCrMax*rnd_.sample01<scalar>())
+        {
+            const vector c0(g.U());
+            const scalar Ei0 = g.Ei();
+            reemit(g, s);
+            ++nAccepted;
+
+            // What the gas gained (all W_g real molecules)
+            const scalar m = mass_[g.typeId()];
+            const vector dP(Wg_*m*(g.U() - c0));
+            const scalar dE =
+                Wg_*(0.5*m*(magSqr(g.U()) - magSqr(c0)) + g.Ei() - Ei0);
+            gained_.momentum += dP;
+            gained_.energy += dE;
+            gained_.momentumSqr += cmptSqr(dP);
+            gained_.energySqr += sqr(dE);
+        }
+    }
+
+    return nCandidates;
+}
+
+
+// * * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * //
+
+template<class CloudType>
+typename Foam::TwoWayCoupling<CloudType>::partner
+Foam::TwoWayCoupling<CloudType>::partnerOf(const parcelType& p)
+{
+    partner s;
+    s.W = p.nParticle();
+    s.sigma = constant::mathematical::pi*sqr(0.5*p.d());
+    s.U = p.U();
+    s.T = p.T();
+    s.eps = p.specularFraction();
+    s.alpha = p.thermalAccommodation();
+    return s;
+}
+
+
+template<class CloudType>
+void Foam::TwoWayCoupling<CloudType>::parcelForcesAndHeat(gasCloud* gas)
+{
+    for (auto& list : partners_)
+    {
+        list.clear();
+    }
+    collectPartners();
+
+    OneWayCoupling<CloudType>::parcelForcesAndHeat(gas);
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+template<class CloudType>
+Foam::TwoWayCoupling<CloudType>::TwoWayCoupling
+(
+    const dictionary& dict,
+    CloudType& owner,
+    const word& type,
+    const wordList& valid
+)
+:
+    OneWayCoupling<CloudType>(dict, owner, type),
+    rnd_
+    (
+        inputChecks::getLabelOrDefault
+        (
+            TwoWayCouplingTools::checkedCoeffs
+            (
+                dict, type, TwoWayCouplingTools::withSeed(valid)
+            ),
+            "randomSeed", 0, 0, 2000
+        )
+       *1000003 + 900001 + Pstream::myProcNo()
+    ),
+    sigmaCrMax_(owner.mesh().nCells(), Zero),
+    remainder_(owner.mesh().nCells(), Zero),
+    nCollisionsTotal_(0),
+    Wg_(0),
+    gained_(),
+    mass_(),
+    zeta_(),
+    partners_(owner.mesh().nCells())
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+template<class CloudType>
+void Foam::TwoWayCoupling<CloudType>::coupleGas(gasCloud& gas)
+{
+    if (mass_.empty())
+    {
+        const auto& props = gas.constProps();
+        mass_.setSize(props.size());
+        zeta_.setSize(props.size());
+        forAll(props, typei)
+        {
+            mass_[typei] = props[typei].mass();
+            zeta_[typei] = props[typei].internalDegreesOfFreedom();
+        }
+    }
+
+    const scalar dt = this->owner().db().time().deltaTValue();
+    const auto& occupancy = gas.cellOccupancy();
+    Wg_ = gas.nParticle();
+    gained_ = gasGain();
+
+    label nCandidates = 0;
+    label nCollisions = 0;
+    scalar probabilityMax = 0;
+    forAll(partners_, celli)
+    {
+        const auto& partners = partners_[celli];
+        const auto& inCell = occupancy[celli];
+        if (partners.empty() || inCell.empty())
+        {
+            continue;
+        }
+
+        label nAccepted = 0;
+        nCandidates += collideCell(celli, inCell, partners, dt, nAccepted);
+        nCollisions += nAccepted;
+        probabilityMax =
+            max(probabilityMax, scalar(nAccepted)/inCell.size());
+    }
+    nCollisionsTotal_ += nCollisions;
+
+    scalar total = nCollisionsTotal_;
+    reduce(nCandidates, sumOp<label>());
+    reduce(nCollisions, sumOp<label>());
+    reduce(total, sumOp<scalar>());
+    reduce(probabilityMax, maxOp<scalar>());
+
+    reduce(gained_.momentum, sumOp<vector>());
+    reduce(gained_.energy, sumOp<scalar>());
+    reduce(gained_.momentumSqr, sumOp<vector>());
+    reduce(gained_.energySqr, sumOp<scalar>());
+
+    Info<< "    Gas-grain candidates, collisions, since start,"
+        << " largest probability = " << nCandidates << ' ' << nCollisions
+        << ' ' << total << ' ' << probabilityMax << nl
+        << "    Gas gain from grains: momentum, energy, sums of squares = "
+        << gained_.momentum << ' ' << gained_.energy << ' '
+        << gained_.momentumSqr << ' ' << gained_.energySqr << nl;
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,303 @@
+"""Two-way free-molecular coupling, interphaseCoupling twoWayDirect and
+twoWayIndirect (issue 5, item 3; SPEC.md 4.3, 4.4 and section 8's
+"thermal and momentum relaxation of gas + dust in a closed periodic box"),
+end to end on the solver.
+
+Case: validation/freeMolecularCoupling/box (one cell, 0.1 x 0.08 x 0.08 m,
+periodic in every direction: nothing enters or leaves, NTC conserves
+momentum and energy exactly, so every change of the totals comes from the
+coupling).  Fixed seeds (gas, both initialisers, the coupling's
+randomSeed).
+  gas    argon, n = 1e20 m^-3, T_g0 = 300 K, drift U_g0 = (200 0 0) m/s,
+         W_g = 1.6e12 (40000 simulators), M_g = n m_g V = 4.24e-9 kg,
+         heat capacity C_g = (3/2) k n V (monatomic);
+  grains 10 parcels of W_s = 3.374e5 (W_s != W_g) grains, d = 10 um,
+         rho_p = 1.2 kg/m^3 (a light grain, so that it relaxes in ~100
+         steps), c_p = 400 J/kg/K, T_p0 = 500 K, v_p0 = (-300 0 0) m/s,
+         eps = 0, alpha_T = 1: M_s = 2.12e-9 kg (half the gas), heat
+         capacity C_s = M_s c_p = 0.64 C_g.
+  Runs: twoWayDirect and twoWayIndirect (averagingSteps 2) as above, and
+  twoWayDirect with nitrogen (zeta = 2, Larsen-Borgnakke), eps = 0.1,
+  alpha_T = 0.8, so that all three re-emission branches and the
+  re-sampled internal energy are exercised (C_g = (3 + zeta)/2 k n V;
+  T_g is the translational temperature, rotation being in equilibrium
+  with it at the end).
+  dt = 1e-5 s, 700 steps, written every 100.  Free-molecular rates at the
+  start (SPEC.md 4.2, Epstein-like): the slip decays at ~1e3 /s, the
+  temperature gap at (1 + C_s/C_g) pi R^2 n <c> 2k/(m_p c_p) ~ 700 /s, so
+  700 steps are ~5 relaxation times; a gas simulator meets a grain with
+  probability ~2e-3 per step (logged: "largest probability").
+
+Analytic common state, from the initial totals (read from the written
+simulators and parcels: P = sum W m c, E = sum W (m |c|^2/2 + E_int) for
+the gas and sum W m_p (|v|^2/2 + c_p T_p) for the grains):
+    U_f = P/(M_g + M_s),  T_f = (E - (M_g + M_s) |U_f|^2/2)/(C_g + C_s).
+
+Checks and their tolerances (all from the noise of the scheme, see
+TwoWayCoupling.H): the grains receive Gallis's expected F and Q while the
+gas receives sampled collisions, so the totals random-walk.  The solver
+logs, per step, the sums over the accepted collisions of the squares of
+what the gas gained (per momentum component, and energy); their running
+sum S(t) bounds the variance of the totals' error at t (the error is a
+sum of zero-mean increments, one per collision, each of variance <= its
+square's expectation).  sigma = sqrt(S).
+1. Conservation at every write (and the number of simulators, exactly): |P_x(t) - P_x(0)| <= 5 sigma_P and
+   |E(t) - E(0)| <= 5 sigma_E.  Not included, being far smaller: the
+   explicit Euler kinetic-energy gain of the grains, sum (F dt)^2/(2 m_p)
+   ~ 6e-7 J ~ 0.1 sigma_E; for twoWayIndirect (averagingSteps 2) the lag
+   of the averaged grain state, half a step of a ~100-step relaxation,
+   ~0.5 % of the exchange ~ 0.2 sigma.
+   The figures are printed in sigma and relative to the exchanged
+   amounts, |P_s(0) - M_s U_f| and |E_g(end) - E_g(0)|.
+2. Common final state: at the end, each phase's mean velocity within
+   5 sigma_P/M_g of U_f and each phase's temperature (gas: translational,
+   from the simulators' peculiar velocities; grains: the c_p-weighted
+   mean T_p) within 5 sigma_E/C_g of T_f (the error of the totals, which
+   mostly sits in the gas first, plus the lag of the phases behind each
+   other's noise), and the residual of the relaxation, exp(-5) of the
+   initial gaps, is below these.
+3. Collision rate: over the last write interval (both phases at rest
+   relative to each other, at T ~ T_f) the mean accepted collisions per
+   step equal N_g n_s pi R^2 <c> dt, <c> = sqrt(8 k T_g/(pi m_g)) the
+   mean relative speed of molecules and grains at rest (the slip left is
+   a few m/s: an O(s^2) ~ 1e-4 correction), n_s the real-grain number
+   density: within 5 Poisson sigma (sqrt of the count).  This is what
+   makes the unequal weights right (the gas side uses n_s, not the
+   parcel count).
+4. Bad input: averagingSteps 0, randomSeed 2001, an unknown keyword in
+   <type>Coeffs stop the solver with a FatalIOError naming file, keyword,
+   value and the valid range or keywords.
+
+The measured figures are printed (PASS/FAIL lines).
+"""
+
+import math
+import os
+
+import numpy as np
+import pytest
+
+from rmf import foam
+from rmf.box import CONTROL, FILL, GAS, GRAINS, K, MASS, PROPS, V_CELL, ZETA, copy_box
+
+BUILD = os.path.join(foam.PROJECT_DIR, "build", "validation", "twoWayCoupling")
+
+N_GAS, T_GAS, U_GAS = 1e20, 300.0, 200.0
+W_GAS = 1.6e12
+D, RHO_P, CP_P, T_P0, U_P0 = 1e-5, 1.2, 400.0, 500.0, -300.0
+N_PARCELS, W_S = 10, 3.374e5
+DT, STEPS, WRITE_EVERY = 1e-5, 700, 100
+N_SIGMA = 5
+GAIN = "Gas gain from grains: momentum, energy, sums of squares"
+COUNTS = "Gas-grain candidates, collisions, since start, largest probability"
+
+
+def make_case(name, coupling, coeffs=None, n_gas=N_GAS, steps=STEPS, species="Ar",
+              eps=0.0, alpha=1.0):
+    """The box with one gas species and the grains above, meshed and
+    filled."""
+    case = copy_box(os.path.join(BUILD, name), species, n_gas, eps, alpha, coupling)
+    foam.set_entry(case, GAS, "nEquivalentParticles", W_GAS*n_gas/N_GAS)
+    foam.set_entry(case, FILL, "temperature", T_GAS)
+    foam.set_entry(case, FILL, "velocity", f"({U_GAS:g} 0 0)")
+    foam.set_entry(case, PROPS, "constantProperties/T0", T_P0)
+    foam.set_entry(case, PROPS, "constantProperties/rho0", RHO_P)
+    foam.set_entry(case, PROPS, "constantProperties/Cp0", CP_P)
+    if coeffs:
+        foam.set_entry(case, PROPS, f"subModels/{coupling}Coeffs", "{}")
+    for key, value in (coeffs or {}).items():
+        foam.set_entry(case, PROPS, f"subModels/{coupling}Coeffs/{key}", value)
+    foam.set_entry(case, GRAINS, "regions/grain/d", D)
+    foam.set_entry(case, GRAINS, "regions/grain/nParcels", N_PARCELS)
+    foam.set_entry(case, GRAINS, "regions/grain/nParticle", W_S)
+    foam.set_entry(case, GRAINS, "regions/grain/U0", f"({U_P0:g} 0 0)")
+    foam.set_entry(case, CONTROL, "deltaT", DT)
+    foam.set_entry(case, CONTROL, "endTime", f"{steps*DT:.6g}")
+    foam.set_entry(case, CONTROL, "writeInterval", WRITE_EVERY)
+    foam.run(case, "blockMesh")
+    foam.run(case, "rarefiedMultiphaseInitialise")
+    return case
+
+
+def parcel_list(case, time, cloud, name, n):
+    """A parcel property of a cloud at time, n values (uniform lists
+    expanded)."""
+    values = foam.read_list(os.path.join(case, time, "lagrangian", cloud, name))
+    return np.broadcast_to(values, (n,) + values.shape[1:]) if len(values) != n else values
+
+
+def state(case, time, m_g):
+    """Totals and phase means of gas (molecular mass m_g) and grains at
+    a write time."""
+    c = foam.read_list(os.path.join(case, time, "lagrangian", "dsmc", "U"))
+    ei = parcel_list(case, time, "dsmc", "Ei", len(c))
+    n_g = len(c)
+    u_g = c.mean(axis=0)
+    s = {
+        "Ng": n_g,
+        "Pg": W_GAS*m_g*c.sum(axis=0),
+        "Eg": W_GAS*(0.5*m_g*(c**2).sum() + ei.sum()),
+        "Ug": u_g,
+        "Tg": m_g*((c - u_g)**2).sum()/(3*K*n_g),
+    }
+    U = foam.read_list(os.path.join(case, time, "lagrangian", "grains", "U"))
+    n = len(U)
+    W, d, rho, T, cp = (parcel_list(case, time, "grains", f, n)
+                        for f in ("nParticle", "d", "rho", "T", "Cp"))
+    m = W*rho*math.pi*d**3/6
+    s.update({
+        "Ps": (m[:, None]*U).sum(axis=0),
+        "Es": (m*(0.5*(U**2).sum(axis=1) + cp*T)).sum(),
+        "Ms": m.sum(),
+        "Cs": (m*cp).sum(),
+        "Us": (m[:, None]*U).sum(axis=0)/m.sum(),
+        "Ts": (m*cp*T).sum()/(m*cp).sum(),
+        "Ns": W.sum(),
+    })
+    return s
+
+
+def report(ok, text):
+    print(f"\n{'PASS' if ok else 'FAIL'} {text}")
+    return ok
+
+
+# ---------------------------------------------------------------------------
+# The two box runs (one each, shared by the checks)
+
+RUNS = {
+    # name: (model, coefficients, species, eps, alpha_T)
+    "twoWayDirect": ("twoWayDirect", {"randomSeed": 3}, "Ar", 0.0, 1.0),
+    "twoWayIndirect": ("twoWayIndirect", {"randomSeed": 3, "averagingSteps": 2},
+                       "Ar", 0.0, 1.0),
+    "twoWayDirect-N2": ("twoWayDirect", {"randomSeed": 4}, "N2", 0.1, 0.8),
+}
+
+
+@pytest.fixture(scope="module", params=list(RUNS))
+def box(request):
+    model, coeffs, species, eps, alpha = RUNS[request.param]
+    m_g, zeta = MASS[species], ZETA[species]
+    case = make_case(f"box_{request.param}", model, coeffs, species=species,
+                     eps=eps, alpha=alpha)
+    log = foam.run(case, "rarefiedMultiphaseFoam")
+    times = foam.times(case)
+    assert len(times) == STEPS//WRITE_EVERY + 1, times
+    gains = foam.log_values(log, GAIN)
+    counts = foam.log_values(log, COUNTS)
+    assert gains.shape == (STEPS, 8) and counts.shape == (STEPS, 4), \
+        (gains.shape, counts.shape)
+    states = [state(case, t, m_g) for t in times]
+    s0 = states[0]
+    M_g = W_GAS*m_g*s0["Ng"]
+    C_g = (3 + zeta)/2*K*W_GAS*s0["Ng"]
+    P0 = s0["Pg"] + s0["Ps"]
+    E0 = s0["Eg"] + s0["Es"]
+    M = M_g + s0["Ms"]
+    U_f = P0/M
+    T_f = (E0 - 0.5*M*(U_f @ U_f))/(C_g + s0["Cs"])
+    return dict(model=request.param, m_g=m_g, case=case, times=times, gains=gains, counts=counts,
+                states=states, M_g=M_g, C_g=C_g, P0=P0, E0=E0, U_f=U_f, T_f=T_f)
+
+
+def test_conservation(box):
+    """Total momentum and energy of gas + grains at every write within
+    5 sigma of the scheme's noise (header, check 1)."""
+    s0, end = box["states"][0], box["states"][-1]
+    exchanged_P = abs(s0["Ps"][0] - s0["Ms"]*box["U_f"][0])
+    exchanged_E = abs(end["Eg"] - s0["Eg"])
+    # Every simulator stays (re-emission changes velocities only)
+    assert all(s["Ng"] == s0["Ng"] for s in box["states"]), \
+        [s["Ng"] for s in box["states"]]
+    worst_P = worst_E = 0.0
+    ok = True
+    for k, s in enumerate(box["states"][1:], 1):
+        n = k*WRITE_EVERY
+        sigma_P = math.sqrt(box["gains"][:n, 4].sum())
+        sigma_E = math.sqrt(box["gains"][:n, 7].sum())
+        dP = s["Pg"][0] + s["Ps"][0] - box["P0"][0]
+        dE = s["Eg"] + s["Es"] - box["E0"]
+        worst_P = max(worst_P, abs(dP)/sigma_P)
+        worst_E = max(worst_E, abs(dE)/sigma_E)
+        ok = ok and abs(dP) <= N_SIGMA*sigma_P and abs(dE) <= N_SIGMA*sigma_E
+    report(ok, f"{box['model']} conservation: at the end momentum x "
+           f"{dP:+.3e} kg m/s ({100*dP/exchanged_P:+.2f} % of the exchanged "
+           f"{exchanged_P:.3e}, {100*dP/abs(box['P0'][0]):+.2f} % of the total; "
+           f"{dP/sigma_P:+.2f} sigma), energy {dE:+.3e} J "
+           f"({100*dE/exchanged_E:+.2f} % of the gas's change {exchanged_E:.3e}, "
+           f"{100*dE/box['E0']:+.4f} % of the total; {dE/sigma_E:+.2f} sigma); "
+           f"worst over the writes {worst_P:.2f} and {worst_E:.2f} sigma "
+           f"(tolerance {N_SIGMA} sigma; sigma at the end "
+           f"{100*sigma_P/exchanged_P:.2f} % and {100*sigma_E/exchanged_E:.2f} % "
+           "of the exchange)")
+    assert ok, (worst_P, worst_E)
+
+
+def test_common_final_state(box):
+    """Both phases at the analytic common velocity and temperature at the
+    end (header, check 2)."""
+    s0, end = box["states"][0], box["states"][-1]
+    sigma_P = math.sqrt(box["gains"][:, 4].sum())
+    sigma_E = math.sqrt(box["gains"][:, 7].sum())
+    tol_U = N_SIGMA*sigma_P/box["M_g"]
+    tol_T = N_SIGMA*sigma_E/box["C_g"]
+    U_f, T_f = box["U_f"][0], box["T_f"]
+    errors = {
+        "U_gas": end["Ug"][0] - U_f, "U_grains": end["Us"][0] - U_f,
+        "T_gas": end["Tg"] - T_f, "T_grains": end["Ts"] - T_f,
+    }
+    ok = (abs(errors["U_gas"]) <= tol_U and abs(errors["U_grains"]) <= tol_U
+          and abs(errors["T_gas"]) <= tol_T and abs(errors["T_grains"]) <= tol_T)
+    report(ok, f"{box['model']} common state: U_f {U_f:.2f} m/s (from "
+           f"{s0['Ug'][0]:.1f} and {s0['Us'][0]:.1f}), gas {end['Ug'][0]:.2f}, "
+           f"grains {end['Us'][0]:.2f} (tolerance {tol_U:.2f} m/s); T_f "
+           f"{T_f:.2f} K (from {s0['Tg']:.1f} and {s0['Ts']:.1f}), gas "
+           f"{end['Tg']:.2f}, grains {end['Ts']:.2f} (tolerance {tol_T:.2f} K)")
+    assert ok, errors
+
+
+def test_collision_rate(box):
+    """Accepted gas-grain collisions per step at the end against the
+    real-grain free-molecular rate (header, check 3)."""
+    end = box["states"][-1]
+    last = box["counts"][-WRITE_EVERY:, 1]
+    measured = last.mean()
+    n_s = end["Ns"]/V_CELL
+    cbar = math.sqrt(8*K*end["Tg"]/(math.pi*box["m_g"]))
+    expected = end["Ng"]*n_s*math.pi*(D/2)**2*cbar*DT
+    sigma = math.sqrt(last.sum())/len(last)
+    err = measured/expected - 1
+    ok = abs(measured - expected) <= N_SIGMA*sigma
+    report(ok, f"{box['model']} collisions per step over the last "
+           f"{WRITE_EVERY} steps: {measured:.3f}, expected {expected:.3f} "
+           f"({100*err:+.2f} %, Poisson sigma {100*sigma/expected:.2f} %, "
+           f"tolerance {N_SIGMA} sigma); largest per-simulator probability "
+           f"{box['counts'][:, 3].max():.2e}")
+    assert ok, err
+    assert box["counts"][:, 3].max() < 0.01
+
+
+# ---------------------------------------------------------------------------
+# Bad input
+
+@pytest.fixture(scope="module")
+def small():
+    """The box with few simulators, for the input checks."""
+    return make_case("small", "twoWayDirect", n_gas=1e18, steps=2)
+
+
+@pytest.mark.parametrize("model, key, value, texts", [
+    ("twoWayIndirect", "averagingSteps", 0, ("0", "[1, ")),
+    ("twoWayDirect", "randomSeed", 2001, ("2001", "[0, 2000]")),
+    ("twoWayIndirect", "averagingStep", 10, ("Unknown keyword", "averagingSteps",
+                                            "randomSeed")),
+])
+def test_bad_input(small, model, key, value, texts):
+    case = foam.copy_case(small, os.path.join(BUILD, f"bad_{model}_{key}"))
+    foam.set_entry(case, PROPS, "subModels/interphaseCoupling", model)
+    foam.set_entry(case, PROPS, f"subModels/{model}Coeffs", "{}")
+    foam.set_entry(case, PROPS, f"subModels/{model}Coeffs/{key}", value)
+    out = foam.run_failing(case, "rarefiedMultiphaseFoam")
+    for text in ("FOAM FATAL IO ERROR", "grainsProperties", model + "Coeffs", key) + texts:
+        assert text in out, (text, out[-2000:])
+    print(f"\nPASS bad {model}Coeffs/{key} {value} stops with a FatalIOError")
