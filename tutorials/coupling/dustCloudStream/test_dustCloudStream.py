@@ -14,7 +14,8 @@ Checks (physical, each able to fail):
 
   C_D the free-molecular sphere's (SPEC.md 4.2; validation/dragLaws/
   reference.py, independent of the C++) for the free-molecular models
-  (oneWay, adaptive: Kn_p = lambda/d ~ 3800 >> KnSwitch) and Loth's for
+  (oneWay, twoWayDirect, twoWayIndirect, adaptive: Kn_p = lambda/d ~ 3800
+  >> KnSwitch) and Loth's for
   Loth (mu from the VHS law at 1000 K), with T_p(t) the run's mean grain
   temperature (linear between writes), by RK4.  Tolerance 3 %: the
   estimate uses the nominal stream, while the grains feel the realized
