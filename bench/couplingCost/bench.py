@@ -29,7 +29,7 @@ step (N = --steps):
     coupling cost ratio    r_model  = (T_model - T_none)/(N t_gas)
 
 i.e. r_model is the time the coupling model adds to a step over none
-(which runs the solid phase and the per-step lambda sampling pass) divided
+(which runs the solid phase and the per-step sampling pass of the gas) divided
 by the time of the DSMC step.  Target (issue 5 item 8): the coupling "no
 more than comparable to the DSMC step", ratio <= 1; a ratio above is
 printed as MISSES TARGET.  oneWay's sum is O(simulators x parcels) per
@@ -198,7 +198,7 @@ def report(metric, T, models, args):
           f"({args.simulators*args.cells**3} simulators); solid phase alone "
           f"{1e3*solids:.3f} ms ({args.parcels*args.cells**3} parcels); none (gas + "
           f"grains) {1e3*none:.3f} ms, so none's extra over gas + solids alone (the "
-          f"lambda sampling pass) {1e3*sampling:.3f} ms = {sampling/gas:.3f} DSMC steps")
+          f"per-step sampling pass of the gas) {1e3*sampling:.3f} ms = {sampling/gas:.3f} DSMC steps")
     summary = []
     for model in models:
         if model == "none":
