@@ -219,27 +219,9 @@ template<class CloudType>
 Foam::LothCoupling<CloudType>::LothCoupling
 (
     const dictionary& dict,
-    CloudType& owner
-)
-:
-    InterphaseCouplingModel<CloudType>(dict, owner, typeName),
-    fromDsmc_(true),
-    averagingSteps_(1),
-    prescribed_(nullptr),
-    average_(),
-    lift_(false),
-    curlU_()
-{
-    readCoeffs(dict.subDict(typeName + "Coeffs"), false);
-}
-
-
-template<class CloudType>
-Foam::LothCoupling<CloudType>::LothCoupling
-(
-    const dictionary& dict,
     CloudType& owner,
-    const word& type
+    const word& type,
+    const bool forceDsmc
 )
 :
     InterphaseCouplingModel<CloudType>(dict, owner, type),
@@ -250,8 +232,37 @@ Foam::LothCoupling<CloudType>::LothCoupling
     lift_(false),
     curlU_()
 {
-    readCoeffs(dict.optionalSubDict(type + "Coeffs"), true);
+    readCoeffs
+    (
+        forceDsmc
+      ? dict.optionalSubDict(type + "Coeffs")
+      : dict.subDict(type + "Coeffs"),
+        forceDsmc
+    );
 }
+
+
+template<class CloudType>
+Foam::LothCoupling<CloudType>::LothCoupling
+(
+    const dictionary& dict,
+    CloudType& owner
+)
+:
+    LothCoupling<CloudType>(dict, owner, typeName, false)
+{}
+
+
+template<class CloudType>
+Foam::LothCoupling<CloudType>::LothCoupling
+(
+    const dictionary& dict,
+    CloudType& owner,
+    const word& type
+)
+:
+    LothCoupling<CloudType>(dict, owner, type, true)
+{}
 
 
 // ************************************************************************* //
