@@ -51,22 +51,32 @@ bool Foam::gasParcel::moveAxisymmetric
     }
 
     const scalar w0 = entered_ ? 1 : td.weightAt(this->position());
-    entered_ = false;
+
+    // Just inserted: it entered at a uniformly random time within the step
+    // (upstream moves it over the whole step, which leaves the layer next
+    // to a free-stream boundary short of the last half step's inflow)
+    if (entered_)
+    {
+        this->stepFraction() = cloud.rndGen().template sample01<scalar>();
+        entered_ = false;
+    }
 
     while (td.keepParticle && !td.switchProcessor && this->stepFraction() < 1)
     {
         const scalar f = 1 - this->stepFraction();
-        const point start = this->position();
 
-        // Straight 3-D path over the rest of the step, and the chord in the
-        // meridional plane to where that path ends
+        // Straight 3-D path over the rest of the step from the simulator's
+        // image in the plane z = 0 (it is off the plane only when just
+        // placed), and the chord in that plane to where the path ends
+        const point here = this->position();
+        const point start(here.x(), here.y(), 0);
         const vector path = f*trackTime*U_;
         const point end = start + path;
         const vector chord
         (
             path.x(),
-            axisymmetricGas::radius(end) - start.y(),
-            -start.z()
+            axisymmetricGas::radius(end) - here.y(),
+            -here.z()
         );
 
         this->trackToFace(chord, f);
