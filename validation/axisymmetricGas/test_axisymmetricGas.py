@@ -11,7 +11,9 @@ fixed seeds; about 1.5 minutes of CPU for the three runs.
 Noise and tolerances (uniformity.py): the first batch of 100 steps is
 dropped, the other 9 batch means give each radial bin's standard error
 (batch-means method); a bin fails beyond 5 standard errors (with 9 batches
-the t-distribution (8 d.o.f.) gives P(|t| > 5) = 0.1 % per bin).
+the t-distribution (8 d.o.f.) gives P(|t| > 5) = 0.1 % per bin), or when its
+standard error exceeds 2 % (measured: 0.1-1 % for the density, up to 1.7 K
+for the temperature), so that a 10 % departure cannot hide in the noise.
 """
 
 import math
@@ -34,6 +36,9 @@ EXTENT = 0.05       # radialExtent [m]
 DT = 5e-6
 AR = dict(mass=66.3e-27, diameter=4.17e-10, omega=0.81, t_ref=273.0)
 MAX_DEV = 5.0       # standard errors
+MAX_SE = 0.02       # relative standard error a bin may have: at 5 se the
+                    # checks then see any 10 % departure (a run that has
+                    # lost its simulators has no power and fails)
 
 # name: (maxRadialWeight, nEquivalentParticles, outer boundary); about 15000
 # simulators in each
@@ -86,8 +91,9 @@ def test_uniform_density(runs, name):
     dev = (mean - 1) / se
     figures = (f"n/n_wedge by radius {np.round(mean, 4).tolist()}, "
                f"max |dev| {abs(dev).max():.2f} se (limit {MAX_DEV}), "
-               f"se {se.min():.4f}-{se.max():.4f}")
-    assert _report(abs(dev).max() < MAX_DEV, f"{name} uniform density", figures)
+               f"se {se.min():.4f}-{se.max():.4f} (limit {MAX_SE})")
+    ok = abs(dev).max() < MAX_DEV and se.max() < MAX_SE
+    assert _report(ok, f"{name} uniform density", figures)
 
 
 def test_free_stream_density(runs):
@@ -98,8 +104,10 @@ def test_free_stream_density(runs):
     se = dens.std(axis=0, ddof=1) / math.sqrt(len(dens))
     dev = (mean - N0) / se
     figures = (f"n/N0 by radius {np.round(mean / N0, 4).tolist()}, "
-               f"max |dev| {abs(dev).max():.2f} se (limit {MAX_DEV})")
-    assert _report(abs(dev).max() < MAX_DEV, "openWeighted free-stream density", figures)
+               f"max |dev| {abs(dev).max():.2f} se (limit {MAX_DEV}), "
+               f"relative se up to {(se / N0).max():.4f} (limit {MAX_SE})")
+    ok = abs(dev).max() < MAX_DEV and (se / N0).max() < MAX_SE
+    assert _report(ok, "openWeighted free-stream density", figures)
 
 
 @pytest.mark.parametrize("name", list(VARIANTS))
@@ -110,8 +118,10 @@ def test_temperature(runs, name):
     se = temp.std(axis=0, ddof=1) / math.sqrt(len(temp))
     dev = (mean - T0) / se
     figures = (f"T by radius {np.round(mean, 1).tolist()} K, "
-               f"max |dev| {abs(dev).max():.2f} se (limit {MAX_DEV})")
-    assert _report(abs(dev).max() < MAX_DEV, f"{name} temperature", figures)
+               f"max |dev| {abs(dev).max():.2f} se (limit {MAX_DEV}), "
+               f"se up to {se.max():.2f} K (limit {MAX_SE * T0:.0f} K)")
+    ok = abs(dev).max() < MAX_DEV and se.max() < MAX_SE * T0
+    assert _report(ok, f"{name} temperature", figures)
 
 
 @pytest.mark.parametrize("name", list(VARIANTS))
