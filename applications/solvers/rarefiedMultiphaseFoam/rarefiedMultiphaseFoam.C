@@ -19,12 +19,12 @@ Description
     One step of length deltaT (SPEC.md section 1), and where each part lives:
 
       1. gas inflow               gasCloud::evolve (InflowBoundaryModel)
-      2. gas move                 gasCloud::evolve; per simulator
-                                  gasParcel::afterMove is the hook for the
-                                  axisymmetric rotation into the meridional
-                                  plane and the radial-weight decision
-                                  (clones join the cloud at the end of
-                                  gasCloud::evolve)
+      2. gas move                 gasCloud::evolve; in the axisymmetric
+                                  mode (axisymmetricGas) gasParcel moves
+                                  each simulator in 3-D, rotates it back
+                                  into the meridional plane, and
+                                  gasCloud::weighMove deletes or clones it
+                                  by the radial weight
       3. gas-gas collisions       gasCloud::evolve (NTC, BinaryCollisionModel),
                                   then the instantaneous gas fields are
                                   sampled (upstream's order: what steps 4-5

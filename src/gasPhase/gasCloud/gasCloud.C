@@ -124,14 +124,39 @@ void Foam::gasCloudInputCheck::checkInitialise
 }
 
 
+const Foam::dictionary& Foam::gasCloudInputCheck::checked
+(
+    const dictionary& dict
+)
+{
+    checkProperties(dict);
+    return dict;
+}
+
+
+const Foam::dictionary& Foam::gasCloudInputCheck::checked
+(
+    const dictionary& dict,
+    const dictionary& initialiseDict
+)
+{
+    checkInitialise(initialiseDict, checkProperties(dict));
+    return dict;
+}
+
+
 Foam::gasCloudInputCheck::gasCloudInputCheck
 (
     const word& cloudName,
     const fvMesh& mesh
 )
-{
-    checkProperties(inputChecks::readCloudProperties(cloudName, mesh));
-}
+:
+    axisymmetric_
+    (
+        checked(inputChecks::readCloudProperties(cloudName, mesh)),
+        mesh
+    )
+{}
 
 
 Foam::gasCloudInputCheck::gasCloudInputCheck
@@ -140,13 +165,17 @@ Foam::gasCloudInputCheck::gasCloudInputCheck
     const fvMesh& mesh,
     const dictionary& initialiseDict
 )
-{
-    checkInitialise
+:
+    axisymmetric_
     (
-        initialiseDict,
-        checkProperties(inputChecks::readCloudProperties(cloudName, mesh))
-    );
-}
+        checked
+        (
+            inputChecks::readCloudProperties(cloudName, mesh),
+            initialiseDict
+        ),
+        mesh
+    )
+{}
 
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
@@ -202,6 +231,7 @@ void Foam::gasCloud::fill(const dictionary& initialiseDict)
     }
 
     const fvMesh& mesh = this->mesh();
+    const bool weighted = axisymmetric_.weighted();
 
     forAll(mesh.cells(), celli)
     {
@@ -233,6 +263,18 @@ void Foam::gasCloud::fill(const dictionary& initialiseDict)
                 for (label i = 0; i < n; ++i)
                 {
                     const point position = tet.randomPoint(rndGen());
+
+                    // Radial weighting: keep with probability 1/RWF
+                    if
+                    (
+                        weighted
+                     && rndGen().sample01<scalar>()
+                       *axisymmetric_.weightAt(position) > 1
+                    )
+                    {
+                        continue;
+                    }
+
                     const vector Ui =
                         U + equipartitionLinearVelocity(T, props.mass());
                     const scalar Ei = equipartitionInternalEnergy
@@ -241,7 +283,10 @@ void Foam::gasCloud::fill(const dictionary& initialiseDict)
                         props.internalDegreesOfFreedom()
                     );
 
-                    addNewParcel(position, celli, Ui, Ei, typeId);
+                    gasParcel* p =
+                        new gasParcel(mesh, position, celli, Ui, Ei, typeId);
+                    p->settle();
+                    addParticle(p);
                 }
             }
         }
@@ -255,6 +300,84 @@ void Foam::gasCloud::fill(const dictionary& initialiseDict)
 }
 
 
+void Foam::gasCloud::setWeighting()
+{
+    if (!axisymmetric_.weighted())
+    {
+        return;
+    }
+
+    account_.countWeighting();
+
+    const vectorField& centres = mesh().cellCentres();
+    cellWeight_.setSize(centres.size());
+    forAll(centres, celli)
+    {
+        cellWeight_[celli] = axisymmetric_.weightAt(centres[celli]);
+    }
+
+    nArrived_.setSize(centres.size(), 0);
+}
+
+
+void Foam::gasCloud::sampleWeighted()
+{
+    // Upstream exposes its sampled fields read-only; this cloud owns them
+    // and replaces upstream's unweighted sums
+    volScalarField& rhoN = const_cast<volScalarField&>(this->rhoN());
+    volScalarField& rhoM = const_cast<volScalarField&>(this->rhoM());
+    volScalarField& dsmcRhoN = const_cast<volScalarField&>(this->dsmcRhoN());
+    volScalarField& linearKE = const_cast<volScalarField&>(this->linearKE());
+    volScalarField& internalE =
+        const_cast<volScalarField&>(this->internalE());
+    volScalarField& iDof = const_cast<volScalarField&>(this->iDof());
+    volVectorField& momentum = const_cast<volVectorField&>(this->momentum());
+
+    // Upstream's starting values (VSMALL keeps divisions by rhoN finite)
+    rhoN.primitiveFieldRef() = VSMALL;
+    rhoM.primitiveFieldRef() = VSMALL;
+    dsmcRhoN.primitiveFieldRef() = Zero;
+    linearKE.primitiveFieldRef() = Zero;
+    internalE.primitiveFieldRef() = Zero;
+    iDof.primitiveFieldRef() = VSMALL;
+    momentum.primitiveFieldRef() = Zero;
+
+    for (const gasParcel& p : *this)
+    {
+        const label celli = p.cell();
+        const auto& props = constProps(p.typeId());
+        const scalar w = axisymmetric_.weightAt(p.position());
+        const scalar m = props.mass();
+
+        rhoN[celli] += w;
+        rhoM[celli] += w*m;
+        dsmcRhoN[celli] += 1;
+        linearKE[celli] += w*0.5*m*magSqr(p.U());
+        internalE[celli] += w*p.Ei();
+        iDof[celli] += w*props.internalDegreesOfFreedom();
+        momentum[celli] += w*m*p.U();
+    }
+
+    // Simulators per unit volume (already VSMALL-started) to real densities
+    const scalarField scale(nParticle()/mesh().cellVolumes());
+
+    rhoN.primitiveFieldRef() *= scale;
+    rhoM.primitiveFieldRef() *= scale;
+    linearKE.primitiveFieldRef() *= scale;
+    internalE.primitiveFieldRef() *= scale;
+    iDof.primitiveFieldRef() *= scale;
+    momentum.primitiveFieldRef() *= scale;
+
+    rhoN.correctBoundaryConditions();
+    rhoM.correctBoundaryConditions();
+    dsmcRhoN.correctBoundaryConditions();
+    linearKE.correctBoundaryConditions();
+    internalE.correctBoundaryConditions();
+    iDof.correctBoundaryConditions();
+    momentum.correctBoundaryConditions();
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::gasCloud::gasCloud(const word& cloudName, const fvMesh& mesh)
@@ -264,6 +387,7 @@ Foam::gasCloud::gasCloud(const word& cloudName, const fvMesh& mesh)
     account_("Simulators", mesh.boundaryMesh(), this->size())
 {
     seedFromCase();
+    setWeighting();
 }
 
 
@@ -278,17 +402,102 @@ Foam::gasCloud::gasCloud
     DSMCCloud<gasParcel>(cloudName, mesh, emptied(initialiseDict)),
     account_("Simulators", mesh.boundaryMesh(), 0)
 {
+    setWeighting();
     fill(initialiseDict);
 }
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+void Foam::gasCloud::arrive(const label celli)
+{
+    // The k-th arrival adds (RWF_c - 1) k of upstream's per-pair
+    // candidates: over N arrivals (RWF_c - 1) N (N - 1)/2 of them
+    const label k = nArrived_[celli]++;
+
+    if (k)
+    {
+        collisionSelectionRemainder()[celli] +=
+            (cellWeight_[celli] - 1)*k*nParticle()
+           *sigmaTcRMax()[celli]*mesh().time().deltaTValue()
+           /mesh().cellVolumes()[celli];
+    }
+}
+
+
+bool Foam::gasCloud::weighMove
+(
+    gasParcel& p,
+    const scalar w0,
+    const bool complete
+)
+{
+    if (!axisymmetric_.weighted())
+    {
+        return true;
+    }
+
+    const scalar ratio = w0/axisymmetric_.weightAt(p.position());
+
+    if (ratio < 1)
+    {
+        if (rndGen().sample01<scalar>() >= ratio)
+        {
+            ++account_.deletedStep();
+            return false;
+        }
+    }
+    else if (ratio > 1)
+    {
+        label nClones = label(ratio) - 1;
+        if (ratio - label(ratio) > rndGen().sample01<scalar>())
+        {
+            ++nClones;
+        }
+
+        // Appended to the cloud being moved: the move loop reaches a
+        // clone (or not, if appended while the last member moves) with
+        // the step already done, so its move does nothing, and it is in
+        // the cell for this step's collisions.  (A clone made at a
+        // processor boundary is moved on from there like its parent.)
+        for (label i = 0; i < nClones; ++i)
+        {
+            gasParcel* clone = new gasParcel(p);
+            clone->origId() = clone->getNewParticleID();
+            this->addParticle(clone);
+
+            if (complete)
+            {
+                arrive(clone->cell());
+            }
+        }
+        account_.clonedStep() += nClones;
+    }
+
+    if (complete)
+    {
+        arrive(p.cell());
+    }
+
+    return true;
+}
+
+
 void Foam::gasCloud::evolve()
 {
     const label nBefore = this->size();
 
+    if (axisymmetric_.weighted())
+    {
+        nArrived_ = 0;
+    }
+
     DSMCCloud<gasParcel>::evolve();
+
+    if (axisymmetric_.weighted())
+    {
+        sampleWeighted();
+    }
 
     // Inflow is not reported by upstream's model: it is the balance
     account_.closeStep(nBefore, this->size());

@@ -20,7 +20,12 @@ Foam::gasParcel::trackingData::trackingData(DSMCCloud<gasParcel>& cloud)
 :
     particle::trackingData(cloud),
     nEscaped_(owner(cloud).account().escapedStep()),
-    nLost_(owner(cloud).account().lostStep())
+    nLost_(owner(cloud).account().lostStep()),
+    owner_(owner(cloud)),
+    axisymmetric_
+    (
+        owner_.axisymmetric().active() ? &owner_.axisymmetric() : nullptr
+    )
 {}
 
 
@@ -41,6 +46,33 @@ Foam::gasCloud& Foam::gasParcel::trackingData::owner
     }
 
     return *gc;
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+bool Foam::gasParcel::trackingData::weighMove
+(
+    gasParcel& p,
+    const scalar w0,
+    const bool complete
+)
+{
+    return owner_.weighMove(p, w0, complete);
+}
+
+
+void Foam::gasParcel::rotateVelocityTo(const point& q)
+{
+    const scalar r = axisymmetricGas::radius(q);
+
+    if (r > VSMALL)
+    {
+        const scalar c = q.y()/r;
+        const scalar s = q.z()/r;
+
+        U_ = vector(U_.x(), c*U_.y() + s*U_.z(), c*U_.z() - s*U_.y());
+    }
 }
 
 

@@ -15,6 +15,11 @@ bool Foam::gasParcel::move
     const scalar trackTime
 )
 {
+    if (td.axisymmetric())
+    {
+        return moveAxisymmetric(cloud, td, trackTime);
+    }
+
     // Upstream's ballistic move (reduced-dimension constraint included)
     const bool keep = DSMCParcel<particle>::move(cloud, td, trackTime);
 
@@ -24,14 +29,78 @@ bool Foam::gasParcel::move
         return false;
     }
 
-    afterMove();
-
     return true;
 }
 
 
 template<class TrackCloudType>
-void Foam::gasParcel::hitWallPatch(TrackCloudType& cloud, trackingData&)
+bool Foam::gasParcel::moveAxisymmetric
+(
+    TrackCloudType& cloud,
+    trackingData& td,
+    const scalar trackTime
+)
+{
+    td.switchProcessor = false;
+    td.keepParticle = true;
+
+    // Already at the end of the step (a later sweep of a parallel move)
+    if (this->stepFraction() >= 1)
+    {
+        return true;
+    }
+
+    const scalar w0 = entered_ ? 1 : td.weightAt(this->position());
+
+    // Just inserted: it entered at a uniformly random time within the step
+    // (upstream moves it over the whole step, which leaves the layer next
+    // to a free-stream boundary short of the last half step's inflow)
+    if (entered_)
+    {
+        this->stepFraction() = cloud.rndGen().template sample01<scalar>();
+        entered_ = false;
+    }
+
+    while (td.keepParticle && !td.switchProcessor && this->stepFraction() < 1)
+    {
+        const scalar f = 1 - this->stepFraction();
+
+        // Straight 3-D path over the rest of the step from the simulator's
+        // image in the plane z = 0 (it is off the plane only when just
+        // placed), and the chord in that plane to where the path ends
+        const point here = this->position();
+        const point start(here.x(), here.y(), 0);
+        const vector path = f*trackTime*U_;
+        const point end = start + path;
+        const vector chord
+        (
+            path.x(),
+            axisymmetricGas::radius(end) - here.y(),
+            -here.z()
+        );
+
+        this->trackToFace(chord, f);
+
+        const scalar done = (this->stepFraction() - (1 - f))/f;
+        rotateVelocityTo(start + done*path);
+
+        this->hitFace(chord, cloud, td);
+    }
+
+    if (!td.keepParticle)
+    {
+        td.countRemoved(this->onBoundaryFace() ? this->patch() : -1);
+        return false;
+    }
+
+    td.keepParticle = td.weighMove(*this, w0, !td.switchProcessor);
+
+    return td.keepParticle;
+}
+
+
+template<class TrackCloudType>
+void Foam::gasParcel::hitWallPatch(TrackCloudType& cloud, trackingData& td)
 {
     const label patchi = this->patch();
     const wallPolyPatch& wpp =
@@ -46,13 +115,17 @@ void Foam::gasParcel::hitWallPatch(TrackCloudType& cloud, trackingData&)
     const scalar m = props.mass();
     const scalar iDof = props.internalDegreesOfFreedom();
 
+    // Radial weight factor of the simulator where it hits (1 unless
+    // axisymmetric)
+    const scalar rwf = td.weightAt(this->position());
+
     // Flux-weighted sample of this simulator onto the wall face: a simulator
     // crossing a face of area A at normal speed |U.n| stands for a number
     // density 1/(|U.n| A) per unit time
     auto sampleOnWall = [&]()
     {
         const scalar Un = U_ & nHat;
-        const scalar w = 1/max(mag(Un)*area, VSMALL);
+        const scalar w = rwf/max(mag(Un)*area, VSMALL);
 
         cloud.rhoNBF()[patchi][facei] += w;
         cloud.rhoMBF()[patchi][facei] += m*w;
@@ -75,9 +148,23 @@ void Foam::gasParcel::hitWallPatch(TrackCloudType& cloud, trackingData&)
     const scalar dtArea = cloud.pMesh().time().deltaTValue()*area;
 
     cloud.qBF()[patchi][facei] +=
-        cloud.nParticle()*(energyIn - (0.5*m*magSqr(U_) + Ei_))/dtArea;
+        rwf*cloud.nParticle()*(energyIn - (0.5*m*magSqr(U_) + Ei_))/dtArea;
     cloud.fDBF()[patchi][facei] +=
-        cloud.nParticle()*(momentumIn - m*U_)/dtArea;
+        rwf*cloud.nParticle()*(momentumIn - m*U_)/dtArea;
+}
+
+
+template<class TrackCloudType>
+void Foam::gasParcel::hitWedgePatch(TrackCloudType& cloud, trackingData& td)
+{
+    if (td.axisymmetric())
+    {
+        this->hitSymmetryPatch(cloud, td);
+    }
+    else
+    {
+        particle::hitWedgePatch(cloud, td);
+    }
 }
 
 

@@ -1,0 +1,232 @@
+"""Axisymmetric gas (SPEC.md 6, issue 6 item 3): argon at rest (1e20 m^-3,
+300 K) in a 2.5 degree wedge about the x axis (x, r in [0, 0.05] m, 10 x 10
+cells, Maxwellian walls at 300 K) stays uniform in density and at the wall
+temperature, with radial weighting (maxRadialWeight 10) and without; with the
+outer radius a free-stream boundary at the same state (so that the inflow's
+1/RWF thinning is exercised) it stays at the free-stream density; the
+simulator counts stay within the bounds of the weighting's random walk; the
+NTC collision count matches the equilibrium VHS rate.  1000 steps of 5 us,
+fixed seeds; about 1.5 minutes of CPU for the three runs.
+
+Noise and tolerances (uniformity.py): the first batch of 100 steps is
+dropped, the other 9 batch means give each radial bin's standard error
+(batch-means method); a bin fails beyond 5 standard errors (with 9 batches
+the t-distribution (8 d.o.f.) gives P(|t| > 5) = 0.1 % per bin), or when its
+standard error exceeds 2 % (measured: 0.1-1 % for the density, up to 1.7 K
+for the temperature), so that a 10 % departure cannot hide in the noise.
+"""
+
+import math
+import os
+
+import numpy as np
+import pytest
+
+from rmf import foam
+
+import uniformity as uf
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+CASE = os.path.join(HERE, "wedge")
+BUILD = os.path.join(foam.PROJECT_DIR, "build", "validation", "axisymmetricGas")
+
+N0 = 1e20           # number density of the fill and the free stream [m^-3]
+T0 = 300.0          # fill, walls and free stream [K]
+EXTENT = 0.05       # radialExtent [m]
+DT = 5e-6
+AR = dict(mass=66.3e-27, diameter=4.17e-10, omega=0.81, t_ref=273.0)
+MAX_DEV = 5.0       # standard errors
+MAX_SE = 0.02       # relative standard error a bin may have: at 5 se the
+                    # checks then see any 10 % departure (a run that has
+                    # lost its simulators has no power and fails)
+
+# name: (maxRadialWeight, nEquivalentParticles, outer boundary); about 15000
+# simulators in each
+VARIANTS = {
+    "closedWeighted": (10, 3e9, "wall"),
+    "closedUnweighted": (1, 1.8e10, "wall"),
+    "openWeighted": (10, 3e9, "patch"),
+}
+
+
+def _setup(name):
+    max_weight, weight, outer = VARIANTS[name]
+    case = foam.copy_setup(CASE, os.path.join(BUILD, name))
+    mesh_dict = os.path.join(case, "system", "blockMeshDict")
+    with open(mesh_dict) as f:
+        text = f.read()
+    with open(mesh_dict, "w") as f:
+        f.write(text.replace("outerType       wall;", f"outerType       {outer};"))
+    foam.set_entry(case, "constant/dsmcProperties", "maxRadialWeight", max_weight)
+    foam.set_entry(case, "constant/dsmcProperties", "nEquivalentParticles", weight)
+    foam.run(case, "blockMesh")
+    return case
+
+
+@pytest.fixture(scope="module")
+def runs():
+    out = {}
+    for name in VARIANTS:
+        case = _setup(name)
+        foam.run(case, "rarefiedMultiphaseInitialise")
+        foam.run(case, "rarefiedMultiphaseFoam")
+        out[name] = case
+    return out
+
+
+def _report(ok, what, figures):
+    print(f"{'PASS' if ok else 'FAIL'} axisymmetricGas {what}: {figures}")
+    return ok
+
+
+@pytest.mark.parametrize("name", ["closedWeighted", "closedUnweighted"])
+def test_uniform_density(runs, name):
+    """Closed wedge: each bin's density relative to the whole wedge's in the
+    same batch (the total random-walks under weighting) is 1 within noise."""
+    radii, row_vol, dens, _ = uf.radial_batches(runs[name])
+    overall = (dens * row_vol).sum(axis=1) / row_vol.sum()
+    ratio = dens / overall[:, None]
+    mean = ratio.mean(axis=0)
+    se = ratio.std(axis=0, ddof=1) / math.sqrt(len(ratio))
+    dev = (mean - 1) / se
+    figures = (f"n/n_wedge by radius {np.round(mean, 4).tolist()}, "
+               f"max |dev| {abs(dev).max():.2f} se (limit {MAX_DEV}), "
+               f"se {se.min():.4f}-{se.max():.4f} (limit {MAX_SE})")
+    ok = abs(dev).max() < MAX_DEV and se.max() < MAX_SE
+    assert _report(ok, f"{name} uniform density", figures)
+
+
+def test_free_stream_density(runs):
+    """Open outer radius (free stream at N0): each bin at N0 within noise;
+    without the inflow's 1/RWF the outer bins would hold up to 10 N0."""
+    _, _, dens, _ = uf.radial_batches(runs["openWeighted"])
+    mean = dens.mean(axis=0)
+    se = dens.std(axis=0, ddof=1) / math.sqrt(len(dens))
+    dev = (mean - N0) / se
+    figures = (f"n/N0 by radius {np.round(mean / N0, 4).tolist()}, "
+               f"max |dev| {abs(dev).max():.2f} se (limit {MAX_DEV}), "
+               f"relative se up to {(se / N0).max():.4f} (limit {MAX_SE})")
+    ok = abs(dev).max() < MAX_DEV and (se / N0).max() < MAX_SE
+    assert _report(ok, "openWeighted free-stream density", figures)
+
+
+@pytest.mark.parametrize("name", list(VARIANTS))
+def test_temperature(runs, name):
+    """Translational temperature of each bin at the walls' 300 K within noise."""
+    _, _, _, temp = uf.radial_batches(runs[name])
+    mean = temp.mean(axis=0)
+    se = temp.std(axis=0, ddof=1) / math.sqrt(len(temp))
+    dev = (mean - T0) / se
+    figures = (f"T by radius {np.round(mean, 1).tolist()} K, "
+               f"max |dev| {abs(dev).max():.2f} se (limit {MAX_DEV}), "
+               f"se up to {se.max():.2f} K (limit {MAX_SE * T0:.0f} K)")
+    ok = abs(dev).max() < MAX_DEV and se.max() < MAX_SE * T0
+    assert _report(ok, f"{name} temperature", figures)
+
+
+@pytest.mark.parametrize("name", list(VARIANTS))
+def test_simulators_bounded(runs, name):
+    """Every step's simulator count within 5 sigma of the expected count
+    N_exp = n/F_N * integral of dV/RWF.  sigma^2 = N_exp (the fill's Poisson
+    noise) + clones + deletions so far (each weighting decision moves the
+    count by one with a probability: a random walk whose variance is at most
+    the number of decisions taken), and the account balances."""
+    case = runs[name]
+    max_weight, weight, _ = VARIANTS[name]
+    expected = uf.expected_simulators(case, N0, weight, max_weight, EXTENT)
+    log = os.path.join(case, "log.rarefiedMultiphaseFoam")
+    present = foam.log_values(log, "Simulators present")[:, 0]
+    in_out = foam.log_values(log, "Simulators in / out since start")
+    events = np.zeros_like(present)
+    cloned = deleted = np.zeros_like(present)
+    if max_weight > 1:
+        cd = foam.log_values(log, "Simulators cloned / deleted since start")
+        cloned, deleted = cd[:, 0], cd[:, 1]
+        events = cloned + deleted
+    sigma = np.sqrt(expected + events)
+    dev = (present - expected) / sigma
+    with open(os.path.join(case, "log.rarefiedMultiphaseInitialise")) as f:
+        initial = float([l for l in f if "Gas simulators added" in l][-1].split(":")[1])
+    balance = initial + in_out[:, 0] - in_out[:, 1] + cloned - deleted - present
+    with open(log) as f:
+        lost = "lost away from patches" in f.read()
+    figures = (f"expected {expected:.0f}, initial {initial:.0f}, "
+               f"range {present.min():.0f}-{present.max():.0f}, "
+               f"last {present[-1]:.0f}, max |dev| {abs(dev).max():.2f} sigma "
+               f"(limit {MAX_DEV}; sigma at the end {sigma[-1]:.0f}), "
+               f"clones + deletions {events[-1]:.0f}, "
+               f"account off by {abs(balance).max():.0f}, lost: {lost}")
+    ok = abs(dev).max() < MAX_DEV and not balance.any() and not lost
+    assert _report(ok, f"{name} simulator count", figures)
+
+
+@pytest.mark.parametrize("name", ["closedWeighted", "closedUnweighted"])
+def test_collision_count(runs, name):
+    """NTC collisions per step against the equilibrium rate with the cell's
+    weight: sum over cells of 1/2 <N_c>^2 F_N RWF_c <sigma_T c_r> dt/V_c,
+    <sigma_T c_r> of OpenFOAM's VHS over the Maxwellian at 300 K.  Tolerance
+    3 %: unweighted the count agrees to 0.1 %; weighted it is about 1 % low
+    because a simulator and its clone (same place and velocity, often in the
+    same sub-cell) have zero relative speed and never collide.  Without the
+    weight in the candidate count it would be about 5 times too low."""
+    case = runs[name]
+    max_weight, weight, _ = VARIANTS[name]
+    n = foam.n_cells(case)
+    centres = foam.cell_centres(case)
+    vol = uf.cell_volumes(case)
+    cell_rwf = uf.rwf(centres[:, 1], max_weight, EXTENT)
+    sims = np.mean([foam.read_field(os.path.join(case, t, "dsmcRhoNMean"), n)
+                    for t in uf.batches(case, skip=0)], axis=0)
+    sigma_cr = uf.vhs_sigma_cr(AR["mass"], AR["diameter"], AR["omega"], AR["t_ref"], T0)
+    expected = (0.5 * sims ** 2 * weight * cell_rwf * sigma_cr * DT / vol).sum()
+    log = os.path.join(case, "log.rarefiedMultiphaseFoam")
+    measured = foam.log_values(log, "Collisions")[:, 0].mean()
+    ratio = measured / expected
+    figures = (f"{measured:.1f} collisions per step, expected {expected:.1f}, "
+               f"ratio {ratio:.4f} (limit 1 +- 0.03)")
+    assert _report(abs(ratio - 1) < 0.03, f"{name} collision count", figures)
+
+
+# Bad input: FatalIOError naming file, keyword, value and valid range
+
+@pytest.fixture(scope="module")
+def meshed():
+    case = foam.copy_setup(CASE, os.path.join(BUILD, "meshed"))
+    foam.run(case, "blockMesh")
+    return case
+
+
+@pytest.mark.parametrize("entry, value, valid", [
+    ("radialExtent", "-0.05", "(0, inf)"),
+    ("maxRadialWeight", "0.5", "[1, inf)"),
+])
+def test_bad_keyword(meshed, entry, value, valid):
+    case = foam.copy_case(meshed, os.path.join(BUILD, "bad" + entry))
+    foam.set_entry(case, "constant/dsmcProperties", entry, value)
+    out = foam.run_failing(case, "rarefiedMultiphaseInitialise")
+    for text in ("FOAM FATAL IO ERROR", "constant/dsmcProperties", entry,
+                 str(float(value)).rstrip("0").rstrip("."), valid):
+        assert text in out, text
+
+
+def test_keyword_without_axisymmetric(meshed):
+    case = foam.copy_case(meshed, os.path.join(BUILD, "notAxisymmetric"))
+    foam.set_entry(case, "constant/dsmcProperties", "axisymmetric", "false")
+    out = foam.run_failing(case, "rarefiedMultiphaseFoam")
+    for text in ("FOAM FATAL IO ERROR", "constant/dsmcProperties", "radialExtent",
+                 "only with 'axisymmetric true;'"):
+        assert text in out, text
+
+
+def test_not_a_wedge():
+    """axisymmetric on the planar impingingStream mesh (no wedge patch)."""
+    tutorial = os.path.join(foam.PROJECT_DIR, "tutorials", "gas", "impingingStream")
+    case = foam.copy_setup(tutorial, os.path.join(BUILD, "planar"))
+    foam.run(case, "blockMesh")
+    props = os.path.join(case, "constant", "dsmcProperties")
+    with open(props, "a") as f:
+        f.write("\naxisymmetric true;\nradialExtent 0.2;\nmaxRadialWeight 10;\n")
+    out = foam.run_failing(case, "rarefiedMultiphaseInitialise")
+    for text in ("FOAM FATAL IO ERROR", "constant/dsmcProperties", "axisymmetric",
+                 "only on a wedge mesh about the x axis", "no wedge patch"):
+        assert text in out, text

@@ -1,0 +1,101 @@
+"""Figures of an axisymmetric equilibrium-gas run (validation/axisymmetricGas/wedge):
+number density and temperature in radial bins from batch means, the simulator
+count over time, and the NTC collision count against the equilibrium VHS rate.
+
+Noise: each written time holds the average over one batch of steps
+(fieldAverage with restartOnOutput); the B batch means of a bin give its
+standard error std/sqrt(B) (batch-means method, which absorbs the correlation
+of successive steps as long as a batch is much longer than the correlation
+time: 100 steps against an acoustic crossing of the radius in about 30).
+"""
+
+import math
+import os
+
+import numpy as np
+from scipy import integrate, special
+
+from rmf import foam
+
+K_B = 1.380649e-23
+
+
+def rwf(r, max_weight, extent):
+    """Radial weight factor RWF(r) = 1 + (RWF_max - 1) r/R_max."""
+    return 1 + (max_weight - 1) * r / extent
+
+
+def batches(case, skip=1):
+    """Written times after the first `skip` batches (the first one starts from
+    the initial fill)."""
+    return [t for t in foam.times(case) if float(t) > 0][skip:]
+
+
+def cell_volumes(case):
+    path = os.path.join(case, "0", "V")
+    if not os.path.exists(path):
+        import subprocess
+        subprocess.run(["postProcess", "-func", "writeCellVolumes", "-time", "0"],
+                       cwd=case, check=True, stdout=subprocess.DEVNULL)
+    return foam.read_field(path)
+
+
+def radial_batches(case, skip=1):
+    """Per radial bin (one row of cells, y being the radius) and per batch:
+    number density, and translational temperature (from the mean kinetic
+    energy less that of the mean velocity).  Returns the bin radii, the row
+    volumes, and (batches, bins) arrays."""
+    n = foam.n_cells(case)
+    centres = foam.cell_centres(case)
+    vol = cell_volumes(case)
+    radii = np.unique(np.round(centres[:, 1], 9))
+    bins = np.searchsorted(radii, np.round(centres[:, 1], 9))
+    mass = float(foam.get_entry(case, "constant/dsmcProperties",
+                                "moleculeProperties/Ar/mass"))
+    row_vol = np.bincount(bins, vol)
+
+    dens, temp = [], []
+    for t in batches(case, skip):
+        def read(name):
+            return foam.read_field(os.path.join(case, t, name + "Mean"), n)
+        rho_n, lin_ke, mom = read("rhoN"), read("linearKE"), read("momentum")
+        nv = np.bincount(bins, rho_n * vol)
+        ke = np.bincount(bins, lin_ke * vol)
+        u = np.array([np.bincount(bins, mom[:, i] * vol) for i in range(3)]) / (mass * nv)
+        dens.append(nv / row_vol)
+        temp.append((ke / nv - 0.5 * mass * (u ** 2).sum(axis=0)) * 2 / (3 * K_B))
+    return radii, row_vol, np.array(dens), np.array(temp)
+
+
+def expected_simulators(case, density, weight, max_weight, extent):
+    """Simulators of a uniform gas of the given number density in the wedge:
+    n/F_N times the integral of 1/RWF over the volume, the rows of cells
+    being slabs a <= y <= b whose volume grows as y dy."""
+    radii, row_vol, _, _ = radial_batches(case, skip=0)
+    points = foam.read_list(os.path.join(case, "constant", "polyMesh", "points"))
+    edges = np.linspace(0, points[:, 1].max(), len(radii) + 1)
+    total = 0.0
+    for (a, b), v in zip(zip(edges[:-1], edges[1:]), row_vol):
+        inv, _ = integrate.quad(lambda y: y / rwf(y, max_weight, extent), a, b)
+        total += v * inv / (0.5 * (b * b - a * a))
+    return density / weight * total
+
+
+def vhs_sigma_cr(mass, diameter, omega, t_ref, temperature):
+    """<sigma_T c_r> over the equilibrium relative-speed distribution for
+    OpenFOAM's VariableHardSphere cross-section
+    sigma_T = pi d^2 (2 k T_ref/(m_r c_r^2))^(omega - 1/2)/Gamma(5/2 - omega)."""
+    m_r = mass / 2
+    a = m_r / (2 * K_B * temperature)
+
+    def f(c):  # Maxwellian relative speed distribution
+        return 4 * math.pi * (a / math.pi) ** 1.5 * c * c * math.exp(-a * c * c)
+
+    def sigma(c):
+        return (math.pi * diameter ** 2
+                * (2 * K_B * t_ref / (m_r * c * c)) ** (omega - 0.5)
+                / special.gamma(2.5 - omega))
+
+    scale = 1 / math.sqrt(a)
+    val, _ = integrate.quad(lambda c: sigma(c) * c * f(c), 0, 12 * scale, limit=200)
+    return val
