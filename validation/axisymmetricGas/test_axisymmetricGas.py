@@ -18,6 +18,7 @@ for the temperature), so that a 10 % departure cannot hide in the noise.
 
 import math
 import os
+import shutil
 
 import numpy as np
 import pytest
@@ -230,3 +231,20 @@ def test_not_a_wedge():
     for text in ("FOAM FATAL IO ERROR", "constant/dsmcProperties", "axisymmetric",
                  "only on a wedge mesh about the x axis", "no wedge patch"):
         assert text in out, text
+
+
+def test_grains_refused(meshed):
+    """Grains in an axisymmetric gas case: not available yet (the grains
+    would be neither rotated nor weighted), so the solver stops naming
+    the keyword and both dictionaries."""
+    case = foam.copy_case(meshed, os.path.join(BUILD, "withGrains"))
+    foam.run(case, "rarefiedMultiphaseInitialise")      # the gas alone
+    snider = os.path.join(foam.PROJECT_DIR, "tutorials", "solids", "sniderSedimentation")
+    for name in ("grainsProperties", "g"):
+        shutil.copy(os.path.join(snider, "constant", name), os.path.join(case, "constant"))
+    foam.set_entry(case, "constant/grainsProperties", "subModels/interphaseCoupling", "none")
+    foam.set_entry(case, "constant/grainsProperties", "subModels/patchInteractionModel", "none")
+    out = foam.run_failing(case, "rarefiedMultiphaseFoam")
+    for text in ("FOAM FATAL IO ERROR", "dsmcProperties", "axisymmetric true",
+                 "constant/grainsProperties", "not available for grains"):
+        assert text in out, (text, out[-1500:])
