@@ -16,7 +16,6 @@ standard error exceeds 2 % (measured: 0.1-1 % for the density, up to 1.7 K
 for the temperature), so that a 10 % departure cannot hide in the noise.
 """
 
-import math
 import os
 import shutil
 
@@ -87,9 +86,7 @@ def test_uniform_density(runs, name):
     radii, row_vol, dens, _ = uf.radial_batches(runs[name])
     overall = (dens * row_vol).sum(axis=1) / row_vol.sum()
     ratio = dens / overall[:, None]
-    mean = ratio.mean(axis=0)
-    se = ratio.std(axis=0, ddof=1) / math.sqrt(len(ratio))
-    dev = (mean - 1) / se
+    mean, se, dev = uf.batch_deviation(ratio, 1)
     figures = (f"n/n_wedge by radius {np.round(mean, 4).tolist()}, "
                f"max |dev| {abs(dev).max():.2f} se (limit {MAX_DEV}), "
                f"se {se.min():.4f}-{se.max():.4f} (limit {MAX_SE})")
@@ -101,9 +98,7 @@ def test_free_stream_density(runs):
     """Open outer radius (free stream at N0): each bin at N0 within noise;
     without the inflow's 1/RWF the outer bins would hold up to 10 N0."""
     _, _, dens, _ = uf.radial_batches(runs["openWeighted"])
-    mean = dens.mean(axis=0)
-    se = dens.std(axis=0, ddof=1) / math.sqrt(len(dens))
-    dev = (mean - N0) / se
+    mean, se, dev = uf.batch_deviation(dens, N0)
     figures = (f"n/N0 by radius {np.round(mean / N0, 4).tolist()}, "
                f"max |dev| {abs(dev).max():.2f} se (limit {MAX_DEV}), "
                f"relative se up to {(se / N0).max():.4f} (limit {MAX_SE})")
@@ -115,9 +110,7 @@ def test_free_stream_density(runs):
 def test_temperature(runs, name):
     """Translational temperature of each bin at the walls' 300 K within noise."""
     _, _, _, temp = uf.radial_batches(runs[name])
-    mean = temp.mean(axis=0)
-    se = temp.std(axis=0, ddof=1) / math.sqrt(len(temp))
-    dev = (mean - T0) / se
+    mean, se, dev = uf.batch_deviation(temp, T0)
     figures = (f"T by radius {np.round(mean, 1).tolist()} K, "
                f"max |dev| {abs(dev).max():.2f} se (limit {MAX_DEV}), "
                f"se up to {se.max():.2f} K (limit {MAX_SE * T0:.0f} K)")

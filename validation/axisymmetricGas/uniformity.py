@@ -99,3 +99,12 @@ def vhs_sigma_cr(mass, diameter, omega, t_ref, temperature):
     scale = 1 / math.sqrt(a)
     val, _ = integrate.quad(lambda c: sigma(c) * c * f(c), 0, 12 * scale, limit=200)
     return val
+
+
+def batch_deviation(samples, expected):
+    """Per bin, over the batches (rows) of samples: the mean, its standard
+    error (batch spread / sqrt(batches)) and the deviation of the mean
+    from expected in standard errors."""
+    mean = samples.mean(axis=0)
+    se = samples.std(axis=0, ddof=1)/np.sqrt(len(samples))
+    return mean, se, (mean - expected)/se
