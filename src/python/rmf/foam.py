@@ -207,6 +207,22 @@ def read_list(path):
     return values
 
 
+_POSITION = re.compile(rb"\(([^()]*)\)\s+(-?\d+)")
+
+
+def read_positions(path, cells=False):
+    """Parcel positions (n, 3) of an ASCII lagrangian `positions` file,
+    whose lines are "(x y z) celli" (OpenFOAM's legacy position format);
+    with cells=True also the cell of each parcel, (n,) integers."""
+    with open(path, "rb") as f:
+        text = f.read()
+    found = _POSITION.findall(text)
+    pos = np.array([p.split() for p, _ in found], float).reshape(-1, 3)
+    if cells:
+        return pos, np.array([c for _, c in found], int)
+    return pos
+
+
 def read_patch_field(path, patch):
     """Values of one patch of an ASCII vol field file: (faces,) or (faces, 3)."""
     with open(path, "rb") as f:
