@@ -1,0 +1,931 @@
+"""Plume-surface interaction observables (SPEC.md 7.2; issue 6, item 5).
+
+    /usr/bin/python3 -m rmf.psi CASE [--output DIR] [--times T ...]
+    /usr/bin/python3 -m rmf.psi --compare CASE1 CASE2 ... [--labels L ...]
+                                [--output DIR]
+
+The first form writes PNGs and summary.md to DIR (default CASE/observables);
+the second puts the cases side by side at equal physical times (the times
+written by every case; when there are none, each case's time nearest to
+the first case's) and writes compare_*.png and summary.md to DIR (default
+./psiCompare).
+
+Case (the tutorial tutorials/psi/apolloScaledPSI): a wedge about the x
+axis, y radial; nozzle exit at x = 0, the plume flows in +x onto the wall
+`surface` at x = X_s; height above the surface is X_s - x; the radius of a
+point is sqrt(y^2 + z^2).  system/observablesDict holds `surface` (X_s),
+`nozzleRadius`, `layerTop` (x of the initial dust top), `layerRadius` and
+`crossingRadius` [m].  Gas fields (rhoN, UMean, lambda.gas, ...) and grain
+fields (alpha.grains, Knp.grains) at the written times; parcels in
+<time>/lagrangian/grains (positions, U, T, d, nParticle).  A parcel stands
+for nParticle real grains: every statistic below is weighted by it
+("real grains"), the ejection angle by mass (nParticle d^3).
+
+Observables, each a function of this module:
+1. Crater (surface_profile).  Parcels are binned in annuli of width dr
+   (0 to layerRadius) and, in each annulus, in slabs of height dx stacked
+   from the wall (x = X_s) up.  The reference density of an annulus is its
+   real grains inside the initial layer [layerTop, X_s] at the reference
+   time (the first written time with parcels), spread over the layer's
+   height H = X_s - layerTop.  Going up from the wall, slabs are taken
+   while their density is at least `fraction` (0.5) of the reference; the
+   first slab below it is the last one taken.  The dust thickness is the
+   taken real grains over the reference density (the height the dust would
+   fill at its initial packing: exact for a sharp surface anywhere inside
+   a slab, insensitive to dilute ejecta above the surface).  Surface height
+   above the wall h(r) = thickness; crater depth d(r) = H - h(r) (how far
+   the surface has receded below the initial layer top; negative: a
+   rim raised above it); the crater depth is max over the annuli of d(r).
+2. Shock standoff (shock_standoff).  Number density (rhoN, else rhoM) in
+   the cells nearest the axis (centre radius below 1.5 times the smallest
+   one), averaged per x and smoothed by a 3-cell running mean.  Jet
+   density: the minimum of the smoothed profile upstream of the surface;
+   post-shock density: the median of the smoothed profile between that
+   minimum and the surface.  The shock is where the profile first rises
+   through their midpoint after the minimum (linear between cells); the
+   standoff is X_s - x_shock.  No shock when the post-shock density is
+   below 1.5 times the jet density.
+3. Ejection angle (ejection_angles).  Ejecta: parcels above the initial
+   layer top (x < layerTop) moving away from the surface (U_x < 0).  Angle
+   above the surface: atan2(-U_x, sqrt(U_y^2 + U_z^2)), 0 along the
+   surface, 90 degrees normal to it; mass-weighted mean, median and
+   histogram.
+4. Speeds (speeds): |U| of all parcels and of the ejecta, real-grain
+   weighted histogram; ejecta mean (real-grain weighted) and max speed.
+5. Crossing r = crossingRadius (crossing): real grains in the shell
+   |r - r_c| < shell (0.5 mm) with radial velocity v_r < 0 (toward the
+   axis) or > 0 (away).  The fraction toward the axis is flux-weighted:
+   sum(w |v_r|) over v_r < 0 over sum(w |v_r|), which is the fraction of
+   the crossings of r_c per unit time in the limit of a thin shell (a
+   resting grain crosses nothing).  The plain real-grain fraction is
+   reported too.  Crossings are not matched between writes (parcels carry
+   no identity across writes).
+6. Max alpha (max_alpha): largest alpha.grains over the cells.
+7. Kn_p (knp_cells): Knp.grains per cell (lambda/d_p); when absent, the
+   cell's lambda.gas over the real-grain mean d of the parcels in it.
+   Map on the (r, height) plane, log colour scale.  Near the stagnation
+   region (min_knp_stagnation): cells with r <= nozzleRadius between the
+   shock and the surface (height <= standoff; 5 mm when no shock is
+   found).
+8. Grain temperature (temperatures): real-grain weighted histogram of T,
+   min, max and mean.
+
+Missing data (no parcels at a time, no gas fields at time 0, no Knp.grains)
+gives None for that observable and a note saying why; summary.md lists
+the notes and writes "n/a" in the tables, never NaN.
+"""
+
+import argparse
+import math
+import os
+import re
+import sys
+
+import numpy as np
+
+from rmf import foam
+
+CLOUD = "grains"
+SETTINGS = ("surface", "nozzleRadius", "layerTop", "layerRadius", "crossingRadius")
+SURFACE_FRACTION = 0.5          # dust slab taken while density >= 0.5 of initial
+SHOCK_RISE = 1.5                # post-shock over jet density needed for a shock
+AXIS_FACTOR = 1.5               # axis cells: radius < 1.5 x smallest radius
+SMOOTH_CELLS = 3                # running mean along the axis
+SHELL = 0.5e-3                  # half width of the crossing shell [m]
+STAGNATION_HEIGHT = 5e-3        # stagnation region height without a shock [m]
+HISTOGRAM_TIMES = 4             # default number of times in the histograms
+
+
+# --------------------------------------------------------------- input ----
+
+def read_settings(case):
+    """The floats of system/observablesDict (a flat dictionary)."""
+    path = os.path.join(case, "system", "observablesDict")
+    if not os.path.exists(path):
+        raise FileNotFoundError(f"{path}: missing (needs {', '.join(SETTINGS)})")
+    with open(path) as f:
+        text = f.read()
+    text = re.sub(r"/\*.*?\*/", " ", text, flags=re.S)
+    text = re.sub(r"//[^\n]*", " ", text)
+    text = re.sub(r"FoamFile\s*\{[^}]*\}", " ", text)
+    entries = dict(re.findall(r"(\w+)\s+([^;{}\s]+)\s*;", text))
+    missing = [k for k in SETTINGS if k not in entries]
+    if missing:
+        raise KeyError(f"{path}: missing {', '.join(missing)}")
+    return {k: float(entries[k]) for k in SETTINGS}
+
+
+def parcels(case, time, cloud=CLOUD):
+    """Parcels at time as a dict (pos, cell, U, n, and d, T when written),
+    or None when the time has no parcel of the cloud."""
+    base = os.path.join(case, time, "lagrangian", cloud)
+    if not os.path.exists(os.path.join(base, "positions")):
+        return None
+    pos, cell = foam.read_positions(os.path.join(base, "positions"), cells=True)
+    if len(pos) == 0:
+        return None
+    p = dict(pos=pos, cell=cell)
+    for name, key, required in (("U", "U", True), ("nParticle", "n", True),
+                                ("d", "d", False), ("T", "T", False)):
+        path = os.path.join(base, name)
+        if not os.path.exists(path):
+            if required:
+                raise FileNotFoundError(f"{path}: missing ({len(pos)} parcels)")
+            p[key] = None
+            continue
+        values = foam.read_list(path)
+        if name == "U":
+            values = values.reshape(-1, 3)
+        if len(values) != len(pos):
+            raise ValueError(f"{path}: {len(values)} values for {len(pos)} parcels")
+        p[key] = values
+    return p
+
+
+def radius(pos):
+    """Distance from the x axis."""
+    return np.hypot(pos[:, 1], pos[:, 2])
+
+
+def radial_velocity(pos, U):
+    """Velocity component along the radius (away from the axis > 0)."""
+    r = radius(pos)
+    safe = np.where(r > 0, r, 1.0)
+    return np.where(r > 0, (pos[:, 1]*U[:, 1] + pos[:, 2]*U[:, 2])/safe, 0.0)
+
+
+def mesh(case):
+    """Cell centres of the case: dict(C, x, r, n); uses a written C field
+    or runs postProcess -func writeCellCentres on the first time."""
+    names = foam.times(case)
+    if not names:
+        raise FileNotFoundError(f"{case}: no time directories")
+    written = [t for t in names if os.path.exists(os.path.join(case, t, "C"))]
+    try:
+        C = foam.cell_centres(case, written[0] if written else names[0])
+    except FileNotFoundError as error:
+        raise SystemExit(f"psi: {case}: no cell centres and no postProcess to write "
+                         f"them (source etc/bashrc): {error}")
+    return dict(C=C, x=C[:, 0], r=radius(C), n=len(C))
+
+
+def field(case, time, name, ncells):
+    """Internal field at time, or None when not written."""
+    path = os.path.join(case, time, name)
+    if not os.path.exists(path):
+        return None
+    return foam.read_field(path, ncells)
+
+
+# ------------------------------------------------------- observables ----
+
+def _bins(settings, dr, dx):
+    X_s, R = settings["surface"], settings["layerRadius"]
+    H = X_s - settings["layerTop"]
+    dr = dr or settings["nozzleRadius"]/8
+    dx = dx or H/10
+    nr = max(1, int(round(R/dr)))
+    nx = int(math.ceil(X_s/dx))
+    return np.linspace(0, R, nr + 1), dx, nx, H
+
+
+def _slab_counts(p, settings, r_edges, dx, nx):
+    """Real grains per (slab from the wall, annulus)."""
+    X_s = settings["surface"]
+    k = np.floor((X_s - p["pos"][:, 0])/dx).astype(int)
+    k[(k == -1)] = 0                     # on the wall within a slab
+    j = np.searchsorted(r_edges, radius(p["pos"]), side="right") - 1
+    keep = (k >= 0) & (k < nx) & (j >= 0) & (j < len(r_edges) - 1)
+    counts = np.zeros((nx, len(r_edges) - 1))
+    np.add.at(counts, (k[keep], j[keep]), p["n"][keep])
+    return counts
+
+
+def surface_profile(p, reference, settings, dr=None, dx=None,
+                    fraction=SURFACE_FRACTION):
+    """Dust surface and crater depth against r (module docstring, item 1).
+
+    p, reference: parcels now and at the reference time (dicts of
+    `parcels`).  dr: annulus width (default nozzleRadius/8); dx: slab height
+    (default a tenth of the layer).  Returns dict(r_edges, r [annulus
+    centres], height [surface height above the wall], depth [H - height],
+    max_depth, r_max [centre of the deepest annulus]); annuli with no
+    reference grains hold NaN in the arrays and are left out of the max.
+    """
+    r_edges, dx, nx, H = _bins(settings, dr, dx)
+    X_s, top = settings["surface"], settings["layerTop"]
+    in_layer = (reference["pos"][:, 0] >= top - 1e-9*X_s) & \
+        (reference["pos"][:, 0] <= X_s + 1e-9*X_s)
+    ref = dict(pos=reference["pos"][in_layer], n=reference["n"][in_layer])
+    column = _slab_counts(ref, settings, r_edges, dx, nx).sum(axis=0)
+    slab0 = column*dx/H                   # reference real grains per slab
+    counts = _slab_counts(p, settings, r_edges, dx, nx)
+    height = np.full(len(column), np.nan)
+    for j in np.nonzero(column > 0)[0]:
+        ratio = counts[:, j]/slab0[j]
+        below = np.nonzero(ratio < fraction)[0]
+        last = below[0] if len(below) else nx - 1
+        height[j] = ratio[:last + 1].sum()*dx
+    depth = H - height
+    valid = np.isfinite(depth)
+    if not valid.any():
+        raise ValueError("surface_profile: no reference grain in the layer "
+                         f"[{top}, {X_s}] within r <= {r_edges[-1]}")
+    i = np.nanargmax(depth)
+    centres = 0.5*(r_edges[1:] + r_edges[:-1])
+    return dict(r_edges=r_edges, r=centres, height=height, depth=depth,
+                max_depth=float(depth[i]), r_max=float(centres[i]), layer=H)
+
+
+def axis_profile(x, r, values, factor=AXIS_FACTOR):
+    """Values of the cells nearest the axis (radius < factor x smallest),
+    averaged per x: (x, values) sorted by x."""
+    near = r < factor*r.min() + 1e-12*max(abs(x).max(), 1e-30)
+    xs = np.round(x[near], 12)
+    unique, index = np.unique(xs, return_inverse=True)
+    mean = np.bincount(index, weights=values[near])/np.bincount(index)
+    return unique, mean
+
+
+def _running_mean(v, cells):
+    kernel = np.ones(cells)
+    return np.convolve(v, kernel, "same")/np.convolve(np.ones_like(v), kernel, "same")
+
+
+def shock_standoff(x, rho, surface, smooth=SMOOTH_CELLS, rise=SHOCK_RISE):
+    """Normal-shock standoff on the axis (module docstring, item 2).
+
+    x, rho: the axis profile (sorted by x).  Returns dict(standoff,
+    x_shock, rho_jet, rho_post, smooth [the smoothed profile]) or, when
+    no shock is found, dict(standoff=None, note=why).
+    """
+    upstream = x < surface
+    x, rho = x[upstream], rho[upstream]
+    if len(x) < 4:
+        return dict(standoff=None, note=f"{len(x)} axis cells: too few for a shock")
+    s = _running_mean(rho, smooth)
+    i = int(np.argmin(s))
+    jet = s[i]
+    if i >= len(s) - 2:
+        return dict(standoff=None, note="density falls all the way to the surface")
+    post = float(np.median(s[i + 1:]))
+    if post < rise*jet:
+        return dict(standoff=None,
+                    note=f"post-shock density {post:.3g} below {rise} x jet {jet:.3g}")
+    mid = 0.5*(jet + post)
+    k = i + 1 + int(np.nonzero(s[i + 1:] >= mid)[0][0])
+    x_shock = x[k - 1] + (mid - s[k - 1])*(x[k] - x[k - 1])/(s[k] - s[k - 1])
+    return dict(standoff=float(surface - x_shock), x_shock=float(x_shock),
+                rho_jet=float(jet), rho_post=post, smooth=s, x=x)
+
+
+def ejecta(p, settings):
+    """Mask of ejecta: above the initial layer top, moving off the surface."""
+    return (p["pos"][:, 0] < settings["layerTop"]) & (p["U"][:, 0] < 0)
+
+
+def weighted_median(values, weights):
+    order = np.argsort(values)
+    cum = np.cumsum(weights[order])
+    return float(values[order][np.searchsorted(cum, 0.5*cum[-1])])
+
+
+def ejection_angles(p, settings):
+    """Angles [deg] above the surface of the ejecta's velocities, mass
+    weights (nParticle d^3, nParticle when d is not written), mean and
+    median; None when there are no ejecta."""
+    sel = ejecta(p, settings)
+    if not sel.any():
+        return None
+    U = p["U"][sel]
+    angle = np.degrees(np.arctan2(-U[:, 0], np.hypot(U[:, 1], U[:, 2])))
+    w = p["n"][sel]*(p["d"][sel]**3 if p["d"] is not None else 1.0)
+    return dict(angle=angle, weight=w, mean=float(np.average(angle, weights=w)),
+                median=weighted_median(angle, w), parcels=int(sel.sum()),
+                mass_weighted=p["d"] is not None)
+
+
+def speeds(p, settings):
+    """Speeds of all parcels and of the ejecta (real-grain weights)."""
+    speed = np.linalg.norm(p["U"], axis=1)
+    sel = ejecta(p, settings)
+    out = dict(speed=speed, weight=p["n"], mean=float(np.average(speed, weights=p["n"])),
+               max=float(speed.max()), ejecta=int(sel.sum()),
+               ejecta_mean=None, ejecta_max=None)
+    if sel.any():
+        out["ejecta_mean"] = float(np.average(speed[sel], weights=p["n"][sel]))
+        out["ejecta_max"] = float(speed[sel].max())
+    return out
+
+
+def crossing(p, settings, shell=SHELL):
+    """Real grains crossing r = crossingRadius toward / away from the axis
+    (module docstring, item 5): dict(toward_flux, away_flux,
+    fraction_toward [flux-weighted], toward, away [real grains],
+    fraction_toward_grains, parcels); None when the shell holds no moving
+    grain."""
+    rc = settings["crossingRadius"]
+    sel = np.abs(radius(p["pos"]) - rc) < shell
+    vr = radial_velocity(p["pos"][sel], p["U"][sel])
+    w = p["n"][sel]
+    inward, outward = vr < 0, vr > 0
+    flux_in = float(np.sum(w[inward]*-vr[inward]))
+    flux_out = float(np.sum(w[outward]*vr[outward]))
+    if flux_in + flux_out == 0:
+        return None
+    n_in, n_out = float(w[inward].sum()), float(w[outward].sum())
+    return dict(toward_flux=flux_in, away_flux=flux_out,
+                fraction_toward=flux_in/(flux_in + flux_out),
+                toward=n_in, away=n_out, fraction_toward_grains=n_in/(n_in + n_out),
+                parcels=int(sel.sum()))
+
+
+def max_alpha(alpha):
+    """Largest solid volume fraction and its cell, or None."""
+    if alpha is None:
+        return None
+    i = int(np.argmax(alpha))
+    return dict(max=float(alpha[i]), cell=i)
+
+
+def knp_cells(case, time, ncells, p=None):
+    """Kn_p per cell (0 where no grain) and its source, or (None, why)."""
+    knp = field(case, time, "Knp." + CLOUD, ncells)
+    if knp is not None:
+        return knp, "Knp." + CLOUD
+    lam = field(case, time, "lambda.gas", ncells)
+    if lam is None:
+        return None, "neither Knp.grains nor lambda.gas written"
+    if p is None or p["d"] is None:
+        return None, "no Knp.grains, and no parcel diameters for lambda.gas/d"
+    wd = np.bincount(p["cell"], weights=p["n"]*p["d"], minlength=ncells)
+    w = np.bincount(p["cell"], weights=p["n"], minlength=ncells)
+    knp = np.zeros(ncells)
+    has = w > 0
+    knp[has] = lam[has]/(wd[has]/w[has])
+    return knp, "lambda.gas / mean parcel d"
+
+
+def min_knp_stagnation(knp, cells, settings, standoff=None):
+    """Smallest positive Kn_p in the stagnation region (r <= nozzleRadius,
+    height above the surface <= standoff, or STAGNATION_HEIGHT when none):
+    dict(min, r, height, region) or None when no cell there holds grains."""
+    height = settings["surface"] - cells["x"]
+    top = standoff if standoff is not None else STAGNATION_HEIGHT
+    region = (cells["r"] <= settings["nozzleRadius"]) & (height >= 0) & \
+        (height <= top) & (knp > 0)
+    if not region.any():
+        return None
+    i = np.nonzero(region)[0][np.argmin(knp[region])]
+    return dict(min=float(knp[i]), r=float(cells["r"][i]), height=float(height[i]),
+                region=float(top))
+
+
+def temperatures(p):
+    """Grain temperatures with real-grain weights, min, max, mean; None when
+    T is not written."""
+    if p["T"] is None:
+        return None
+    T, w = p["T"], p["n"]
+    return dict(T=T, weight=w, min=float(T.min()), max=float(T.max()),
+                mean=float(np.average(T, weights=w)))
+
+
+# ----------------------------------------------------------- analysis ----
+
+def analyse(case, dr=None, dx=None, shell=SHELL):
+    """Every observable at every written time: dict(case, settings, cells,
+    times [rows], notes, reference time)."""
+    settings = read_settings(case)
+    cells = mesh(case)
+    rows, notes, reference = [], [], None
+    for t in foam.times(case):
+        row = dict(time=t, t=float(t))
+        p = parcels(case, t)
+        row["p"] = p
+        if p is None:
+            notes.append(f"t = {t}: no {CLOUD} parcels written: grain observables n/a")
+        else:
+            if reference is None:
+                reference = (t, p)
+            row["grains"] = float(p["n"].sum())
+            row["crater"] = surface_profile(p, reference[1], settings, dr, dx)
+            row["angles"] = ejection_angles(p, settings)
+            if row["angles"] is None:
+                notes.append(f"t = {t}: no ejecta (x < layerTop, U_x < 0)")
+            row["speeds"] = speeds(p, settings)
+            row["crossing"] = crossing(p, settings, shell)
+            if row["crossing"] is None:
+                notes.append(f"t = {t}: no moving grain within {shell*1e3:g} mm "
+                             f"of r = {settings['crossingRadius']*1e3:g} mm")
+            row["T"] = temperatures(p)
+            if row["T"] is None:
+                notes.append(f"t = {t}: no parcel temperature T written")
+        rho = field(case, t, "rhoN", cells["n"])
+        if rho is None:
+            rho = field(case, t, "rhoM", cells["n"])
+        if rho is None:
+            notes.append(f"t = {t}: no gas density (rhoN, rhoM): shock n/a")
+            row["shock"] = None
+        else:
+            x, values = axis_profile(cells["x"], cells["r"], rho)
+            row["axis"] = (x, values)
+            row["shock"] = shock_standoff(x, values, settings["surface"])
+            if row["shock"]["standoff"] is None:
+                notes.append(f"t = {t}: no shock on the axis ({row['shock']['note']})")
+        row["alpha"] = max_alpha(field(case, t, "alpha." + CLOUD, cells["n"]))
+        if row["alpha"] is None:
+            notes.append(f"t = {t}: no alpha.{CLOUD}")
+        knp, source = knp_cells(case, t, cells["n"], p)
+        row["knp"] = knp
+        row["knp_source"] = source
+        if knp is None:
+            notes.append(f"t = {t}: no Kn_p ({source})")
+            row["knp_min"] = None
+        else:
+            standoff = row["shock"]["standoff"] if row["shock"] else None
+            row["knp_min"] = min_knp_stagnation(knp, cells, settings, standoff)
+            if row["knp_min"] is None:
+                notes.append(f"t = {t}: no grain in the stagnation region (Kn_p n/a)")
+        rows.append(row)
+    if reference is None:
+        notes.append(f"no {CLOUD} parcels at any time: grain observables n/a")
+    return dict(case=case, settings=settings, cells=cells, rows=rows, notes=notes,
+                reference=reference[0] if reference else None)
+
+
+def _get(row, key, sub):
+    item = row.get(key)
+    return None if item is None else item.get(sub)
+
+
+# Columns of the per-time table: (header, key, sub-key, scale, format)
+COLUMNS = (
+    ("t [us]", None, None, 1e6, "{:.4g}"),
+    ("real grains", "grains", None, 1, "{:.4g}"),
+    ("crater depth [mm]", "crater", "max_depth", 1e3, "{:.3f}"),
+    ("at r [mm]", "crater", "r_max", 1e3, "{:.2f}"),
+    ("shock standoff [mm]", "shock", "standoff", 1e3, "{:.3f}"),
+    ("ejection angle mean [deg]", "angles", "mean", 1, "{:.1f}"),
+    ("median [deg]", "angles", "median", 1, "{:.1f}"),
+    ("ejecta mean speed [m/s]", "speeds", "ejecta_mean", 1, "{:.2f}"),
+    ("ejecta max speed [m/s]", "speeds", "ejecta_max", 1, "{:.2f}"),
+    ("toward axis (flux)", "crossing", "fraction_toward", 1, "{:.3f}"),
+    ("toward axis (grains)", "crossing", "fraction_toward_grains", 1, "{:.3f}"),
+    ("max alpha", "alpha", "max", 1, "{:.4g}"),
+    ("min Kn_p stagnation", "knp_min", "min", 1, "{:.3g}"),
+    ("T_p min [K]", "T", "min", 1, "{:.1f}"),
+    ("T_p max [K]", "T", "max", 1, "{:.1f}"),
+)
+
+
+def value(row, key, sub):
+    """One number of a row (None when not available)."""
+    if key is None:
+        return row["t"]
+    if sub is None:
+        return row.get(key)
+    return _get(row, key, sub)
+
+
+def series(analysis, key, sub):
+    """(t, value) arrays over the times where the value is available."""
+    pts = [(r["t"], value(r, key, sub)) for r in analysis["rows"]]
+    pts = [(t, v) for t, v in pts if v is not None]
+    return np.array(pts).reshape(-1, 2)
+
+
+def last(analysis, key, sub):
+    """(time, value) at the last time where it is available, or None."""
+    for r in reversed(analysis["rows"]):
+        v = value(r, key, sub)
+        if v is not None:
+            return r["time"], v
+    return None
+
+
+def _fmt(v, scale, form):
+    return "n/a" if v is None else form.format(v*scale)
+
+
+def table(rows, columns=COLUMNS):
+    lines = ["| " + " | ".join(c[0] for c in columns) + " |",
+             "|" + "---|"*len(columns)]
+    for r in rows:
+        lines.append("| " + " | ".join(_fmt(value(r, c[1], c[2]), c[3], c[4])
+                                       for c in columns) + " |")
+    return lines
+
+
+def key_numbers(analysis):
+    """Lines of the key numbers of a case (summary.md)."""
+    s = analysis["settings"]
+    rows = analysis["rows"]
+    out = []
+
+    def at_last(label, key, sub, scale, unit, form):
+        found = last(analysis, key, sub)
+        if found is None:
+            out.append(f"- {label}: n/a (never available, see the notes)")
+        else:
+            out.append(f"- {label}: {form.format(found[1]*scale)}{unit} at t = {found[0]} s")
+
+    at_last("Crater depth (max over r of the surface's recession below the initial "
+            f"layer top, H = {1e3*(s['surface'] - s['layerTop']):.3g} mm)",
+            "crater", "max_depth", 1e3, " mm", "{:.3f}")
+    at_last("Radius of the deepest annulus", "crater", "r_max", 1e3, " mm", "{:.2f}")
+    at_last("Shock standoff on the axis", "shock", "standoff", 1e3, " mm", "{:.3f}")
+    standoffs = series(analysis, "shock", "standoff")
+    if len(standoffs) > 1:
+        out.append(f"- Shock standoff over {len(standoffs)} times: "
+                   f"{1e3*standoffs[:, 1].min():.3f} to {1e3*standoffs[:, 1].max():.3f} mm")
+    at_last("Mean ejection angle (mass-weighted)", "angles", "mean", 1, " deg", "{:.1f}")
+    at_last("Median ejection angle", "angles", "median", 1, " deg", "{:.1f}")
+    at_last("Ejecta mean speed", "speeds", "ejecta_mean", 1, " m/s", "{:.2f}")
+    at_last("Ejecta max speed", "speeds", "ejecta_max", 1, " m/s", "{:.2f}")
+    at_last(f"Fraction crossing r = {1e3*s['crossingRadius']:g} mm toward the axis "
+            "(flux-weighted)", "crossing", "fraction_toward", 1, "", "{:.3f}")
+    found = last(analysis, "crossing", "fraction_toward")
+    if found:
+        out.append(f"- Fraction away from the axis (flux-weighted): {1 - found[1]:.3f} "
+                   f"at t = {found[0]} s")
+    flux_in = sum(r["crossing"]["toward_flux"] for r in rows if r.get("crossing"))
+    flux_out = sum(r["crossing"]["away_flux"] for r in rows if r.get("crossing"))
+    if flux_in + flux_out > 0:
+        out.append(f"- Toward the axis, pooled over the written times: "
+                   f"{flux_in/(flux_in + flux_out):.3f}")
+    alphas = series(analysis, "alpha", "max")
+    if len(alphas):
+        i = int(np.argmax(alphas[:, 1]))
+        out.append(f"- Max alpha over time: {alphas[i, 1]:.4g} at t = {alphas[i, 0]:.4g} s")
+    else:
+        out.append("- Max alpha: n/a (no alpha.grains written)")
+    at_last("Min Kn_p near the stagnation region", "knp_min", "min", 1, "", "{:.3g}")
+    Ts = [r["T"] for r in rows if r.get("T")]
+    if Ts:
+        out.append(f"- T_p range over all times: {min(T['min'] for T in Ts):.1f} to "
+                   f"{max(T['max'] for T in Ts):.1f} K")
+    else:
+        out.append("- T_p range: n/a (no parcel temperature written)")
+    return out
+
+
+def definitions(settings):
+    return [
+        "Definitions (rmf/psi.py docstring): crater depth = initial layer height "
+        "H = X_s - layerTop minus the dust thickness above the wall in an annulus "
+        "(real grains of the slabs from the wall up to the first slab below 0.5 of "
+        "the initial density, over the initial density); shock = midpoint rise of "
+        "the axis density between the jet minimum and the post-shock median "
+        "(3-cell running mean), standoff = X_s - x_shock; ejecta = parcels with "
+        "x < layerTop and U_x < 0, angle = atan2(-U_x, |U_yz|), mass-weighted; "
+        f"crossing = real grains within {SHELL*1e3:g} mm of r = "
+        f"{settings['crossingRadius']*1e3:g} mm, flux-weighted sum(w|v_r|) by sign "
+        "of v_r; Kn_p stagnation region = r <= nozzleRadius, between shock and "
+        "surface; every statistic weighted by nParticle.",
+    ]
+
+
+# -------------------------------------------------------------- plots ----
+
+def _plt():
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    return plt
+
+
+def pick_times(analysis, wanted=None, count=HISTOGRAM_TIMES):
+    """Rows to show in profiles and histograms: the named times, else up to
+    count times with parcels evenly spread, the last included."""
+    rows = [r for r in analysis["rows"] if r.get("p") is not None]
+    if wanted:
+        chosen = [nearest_row(analysis, float(t)) for t in wanted]
+        return [r for r in chosen if r is not None]
+    if len(rows) <= count:
+        return rows
+    index = np.unique(np.round(np.linspace(0, len(rows) - 1, count)).astype(int))
+    return [rows[i] for i in index]
+
+
+def nearest_row(analysis, t):
+    rows = analysis["rows"]
+    if not rows:
+        return None
+    return min(rows, key=lambda r: abs(r["t"] - t))
+
+
+def plot_crater(ax, analysis, rows, title=None):
+    s = analysis["settings"]
+    H = s["surface"] - s["layerTop"]
+    ax.axhline(1e3*H, color="0.5", linestyle="--", label="initial layer top")
+    for r in rows:
+        c = r.get("crater")
+        if c is None:
+            continue
+        ax.step(1e3*c["r"], 1e3*c["height"], where="mid", label=f"t = {r['time']} s")
+    ax.axvline(1e3*s["nozzleRadius"], color="0.7", linestyle=":", label="nozzle radius")
+    ax.set_xlabel("r [mm]")
+    ax.set_ylabel("dust surface height above the wall [mm]")
+    ax.set_ylim(bottom=0)
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=7)
+    if title:
+        ax.set_title(title)
+
+
+def plot_histogram(ax, rows, key, values, weights, xlabel, bins=40, span=None):
+    """Real-grain (or mass) fraction per bin, one step line per row."""
+    data = [(r, r.get(key)) for r in rows if r.get(key) is not None]
+    if not data:
+        ax.text(0.5, 0.5, f"no {key} data", ha="center", transform=ax.transAxes)
+        return
+    if span is None:
+        lo = min(d[values].min() for _, d in data)
+        hi = max(d[values].max() for _, d in data)
+        span = (lo, hi if hi > lo else lo + 1)
+    edges = np.linspace(span[0], span[1], bins + 1)
+    for r, d in data:
+        h, _ = np.histogram(d[values], edges, weights=d[weights])
+        ax.step(edges[:-1], h/h.sum(), where="post", label=f"t = {r['time']} s")
+    ax.set_xlabel(xlabel)
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=7)
+
+
+def plot_knp(ax, fig, analysis, row, title=None):
+    from matplotlib import colors, tri as mtri
+    knp = row.get("knp") if row else None
+    if knp is None or not (knp > 0).any():
+        ax.text(0.5, 0.5, "no Kn_p (no grains or no field)", ha="center",
+                transform=ax.transAxes)
+        return
+    s, cells = analysis["settings"], analysis["cells"]
+    height = 1e3*(s["surface"] - cells["x"])
+    r = 1e3*cells["r"]
+    triangles = mtri.Triangulation(r, height)
+    bad = ~(knp > 0)
+    triangles.set_mask(bad[triangles.triangles].any(axis=1))
+    positive = knp[knp > 0]
+    norm = colors.LogNorm(vmin=positive.min(), vmax=max(positive.max(), positive.min()*1.01))
+    art = ax.tripcolor(triangles, np.where(bad, positive.min(), knp), norm=norm,
+                       shading="gouraud", cmap="viridis")
+    fig.colorbar(art, ax=ax, label=r"Kn$_p$ = $\lambda$/d$_p$")
+    ax.set_xlabel("r [mm]")
+    ax.set_ylabel("height above the surface [mm]")
+    ax.set_aspect("equal")
+    ax.set_title(title or f"Kn_p, t = {row['time']} s ({row['knp_source']})", fontsize=9)
+
+
+TIMESERIES = (
+    ("crater depth [mm]", (("crater", "max_depth", 1e3, "max over r"),)),
+    ("shock standoff [mm]", (("shock", "standoff", 1e3, "axis"),)),
+    ("max alpha", (("alpha", "max", 1, "max alpha"),)),
+    ("ejection angle [deg]", (("angles", "mean", 1, "mean"), ("angles", "median", 1, "median"))),
+    ("ejecta speed [m/s]", (("speeds", "ejecta_mean", 1, "mean"), ("speeds", "ejecta_max", 1, "max"))),
+    ("fraction toward the axis", (("crossing", "fraction_toward", 1, "flux"),
+                                  ("crossing", "fraction_toward_grains", 1, "grains"))),
+)
+
+
+def plot_timeseries(axes, analysis, label=None, style="-"):
+    for ax, (ylabel, curves) in zip(axes.ravel(), TIMESERIES):
+        for key, sub, scale, name in curves:
+            s = series(analysis, key, sub)
+            if len(s):
+                ax.plot(1e6*s[:, 0], scale*s[:, 1], style, marker="o", markersize=3,
+                        label=f"{label}: {name}" if label else name)
+        ax.set_xlabel("t [us]")
+        ax.set_ylabel(ylabel)
+        ax.grid(alpha=0.3)
+        if ax.lines:
+            ax.legend(fontsize=7)
+
+
+def plot_case(analysis, output, wanted=None):
+    """The PNGs of one case in output; returns their names."""
+    plt = _plt()
+    os.makedirs(output, exist_ok=True)
+    rows = pick_times(analysis, wanted)
+    s = analysis["settings"]
+    written = []
+
+    def save(fig, name):
+        fig.savefig(os.path.join(output, name), dpi=110)
+        plt.close(fig)
+        written.append(name)
+
+    fig, ax = plt.subplots(figsize=(7, 4.5), constrained_layout=True)
+    plot_crater(ax, analysis, rows, "Dust surface (crater profile)")
+    save(fig, "crater_profile.png")
+
+    fig, axes = plt.subplots(2, 3, figsize=(13, 7), constrained_layout=True)
+    plot_timeseries(axes, analysis)
+    save(fig, "timeseries.png")
+
+    fig, ax = plt.subplots(figsize=(7, 4.5), constrained_layout=True)
+    gas_rows = [r for r in analysis["rows"] if r.get("axis") is not None]
+    shown = [gas_rows[i] for i in np.unique(np.round(np.linspace(
+        0, len(gas_rows) - 1, min(HISTOGRAM_TIMES, len(gas_rows)))).astype(int))] \
+        if gas_rows else []
+    for r in shown:
+        x, rho = r["axis"]
+        line, = ax.plot(1e3*(s["surface"] - x), rho, label=f"t = {r['time']} s")
+        if r["shock"]["standoff"] is not None:
+            ax.axvline(1e3*r["shock"]["standoff"], color=line.get_color(), linestyle="--")
+    if not shown:
+        ax.text(0.5, 0.5, "no gas density written", ha="center", transform=ax.transAxes)
+    ax.set_xlabel("height above the surface on the axis [mm] (dashed: shock)")
+    ax.set_ylabel("gas density (rhoN [1/m^3] or rhoM [kg/m^3])")
+    ax.set_yscale("log")
+    ax.grid(alpha=0.3)
+    if shown:
+        ax.legend(fontsize=7)
+    save(fig, "axis_density.png")
+
+    fig, ax = plt.subplots(figsize=(7, 4.5), constrained_layout=True)
+    plot_histogram(ax, rows, "angles", "angle", "weight", "ejection angle above the surface [deg]",
+                   bins=18, span=(0, 90))
+    ax.set_ylabel("mass fraction of the ejecta")
+    save(fig, "ejection_angle.png")
+
+    fig, ax = plt.subplots(figsize=(7, 4.5), constrained_layout=True)
+    plot_histogram(ax, rows, "speeds", "speed", "weight", "grain speed |U| [m/s]")
+    ax.set_ylabel("fraction of the real grains")
+    ax.set_yscale("log")
+    save(fig, "speed_histogram.png")
+
+    fig, ax = plt.subplots(figsize=(7, 4.5), constrained_layout=True)
+    plot_histogram(ax, rows, "T", "T", "weight", "grain temperature T_p [K]")
+    ax.set_ylabel("fraction of the real grains")
+    save(fig, "Tp_histogram.png")
+
+    knp_rows = [r for r in analysis["rows"] if r.get("knp") is not None]
+    fig, ax = plt.subplots(figsize=(7, 5), constrained_layout=True)
+    plot_knp(ax, fig, analysis, knp_rows[-1] if knp_rows else None)
+    save(fig, "knp_map.png")
+    return written
+
+
+# ------------------------------------------------------------ reports ----
+
+def write_summary(analysis, output, pngs):
+    s = analysis["settings"]
+    lines = [f"# Plume-surface interaction observables: {os.path.abspath(analysis['case'])}",
+             "",
+             f"Settings (system/observablesDict): surface X_s = {s['surface']} m, "
+             f"nozzleRadius = {s['nozzleRadius']} m, layerTop = {s['layerTop']} m, "
+             f"layerRadius = {s['layerRadius']} m, crossingRadius = {s['crossingRadius']} m; "
+             f"crater reference time {analysis['reference']} s.",
+             "", "## Key numbers", ""]
+    lines += key_numbers(analysis)
+    lines += ["", "## Values against time", ""]
+    lines += table(analysis["rows"])
+    lines += ["", "## Definitions", ""] + definitions(s)
+    lines += ["", "## Notes", ""] + ([f"- {n}" for n in analysis["notes"]] or ["- none"])
+    lines += ["", "## Figures", ""] + [f"- {p}" for p in pngs]
+    path = os.path.join(output, "summary.md")
+    with open(path, "w") as f:
+        f.write("\n".join(lines) + "\n")
+    return path
+
+
+def run_case(case, output=None, wanted=None, dr=None, dx=None):
+    output = output or os.path.join(case, "observables")
+    analysis = analyse(case, dr, dx)
+    pngs = plot_case(analysis, output, wanted)
+    return write_summary(analysis, output, pngs), analysis
+
+
+def common_times(analyses):
+    """Times (floats) written by every case, and whether they are exact:
+    else the first case's times (each case then uses its nearest)."""
+    sets = [[r["t"] for r in a["rows"]] for a in analyses]
+    first = sets[0]
+    scale = max(max(abs(t) for t in first), 1e-30)
+    common = [t for t in first
+              if all(any(abs(t - u) <= 1e-9*scale for u in other) for other in sets[1:])]
+    if common:
+        return common, True
+    return first, False
+
+
+def compare(cases, labels, output, dr=None, dx=None):
+    """Side-by-side plots and summary of several cases at equal times."""
+    plt = _plt()
+    os.makedirs(output, exist_ok=True)
+    analyses = [analyse(c, dr, dx) for c in cases]
+    common, exact = common_times(analyses)
+    # the common times with parcels in every case, up to HISTOGRAM_TIMES of them
+    with_parcels = [t for t in common
+                    if all((nearest_row(a, t) or {}).get("p") is not None for a in analyses)]
+    shown = with_parcels
+    if len(shown) > HISTOGRAM_TIMES:
+        shown = [shown[i] for i in np.unique(np.round(np.linspace(
+            0, len(shown) - 1, HISTOGRAM_TIMES)).astype(int))]
+    pngs = []
+    ncol = len(cases)
+
+    def save(fig, name):
+        fig.savefig(os.path.join(output, name), dpi=110)
+        plt.close(fig)
+        pngs.append(name)
+
+    fig, axes = plt.subplots(1, ncol, figsize=(5*ncol, 4.5), squeeze=False,
+                             sharey=True, constrained_layout=True)
+    for ax, a, label in zip(axes[0], analyses, labels):
+        plot_crater(ax, a, [nearest_row(a, t) for t in shown], label)
+    save(fig, "compare_crater.png")
+
+    fig, axes = plt.subplots(2, 3, figsize=(13, 7), constrained_layout=True)
+    for a, label, style in zip(analyses, labels, ["-", "--", "-.", ":"]*4):
+        plot_timeseries(axes, a, label, style)
+    save(fig, "compare_timeseries.png")
+
+    for name, key, values, weights, xlabel, span, ylabel in (
+            ("compare_speed.png", "speeds", "speed", "weight", "grain speed |U| [m/s]",
+             None, "fraction of the real grains"),
+            ("compare_ejection_angle.png", "angles", "angle", "weight",
+             "ejection angle above the surface [deg]", (0, 90), "mass fraction of the ejecta"),
+            ("compare_Tp.png", "T", "T", "weight", "grain temperature T_p [K]", None,
+             "fraction of the real grains")):
+        rows = [[nearest_row(a, t) for t in shown] for a in analyses]
+        if span is None:
+            data = [r[key][values] for rr in rows for r in rr if r and r.get(key)]
+            span = (min(d.min() for d in data), max(d.max() for d in data)) if data else None
+            if span and span[1] <= span[0]:
+                span = (span[0], span[0] + 1)
+        fig, axes = plt.subplots(1, ncol, figsize=(5*ncol, 4), squeeze=False, sharey=True,
+                                 constrained_layout=True)
+        for ax, rr, label in zip(axes[0], rows, labels):
+            plot_histogram(ax, rr, key, values, weights, xlabel,
+                           bins=18 if key == "angles" else 40, span=span)
+            ax.set_title(label)
+        axes[0, 0].set_ylabel(ylabel)
+        save(fig, name)
+
+    t_knp = shown[-1] if shown else (common[-1] if common else None)
+    fig, axes = plt.subplots(1, ncol, figsize=(5*ncol, 4.5), squeeze=False,
+                             constrained_layout=True)
+    for ax, a, label in zip(axes[0], analyses, labels):
+        row = nearest_row(a, t_knp) if t_knp is not None else None
+        plot_knp(ax, fig, a, row, f"{label}: Kn_p, t = {row['time'] if row else 'n/a'} s")
+    save(fig, "compare_knp.png")
+
+    lines = ["# Plume-surface interaction: comparison", ""]
+    lines += [f"- {label}: {os.path.abspath(c)}" for label, c in zip(labels, cases)]
+    lines += ["", ("Times written by every case: " if exact else
+                   "No time written by every case: each case at its time nearest to "
+                   f"{labels[0]}'s: ") + ", ".join(f"{t:g}" for t in common) + " s",
+              f"Profiles and histograms at: {', '.join(f'{t:g}' for t in shown) or 'none'} s",
+              ""]
+    columns = (("case", None, None, 1, "{}"),) + COLUMNS
+    lines += ["## Values at the common times", "",
+              "| " + " | ".join(c[0] for c in columns) + " |", "|" + "---|"*len(columns)]
+    for t in common:
+        for a, label in zip(analyses, labels):
+            r = nearest_row(a, t)
+            cells = [label] + [_fmt(value(r, c[1], c[2]), c[3], c[4]) for c in COLUMNS]
+            lines.append("| " + " | ".join(cells) + " |")
+    for a, label in zip(analyses, labels):
+        lines += ["", f"## Key numbers: {label}", ""] + key_numbers(a)
+        if a["notes"]:
+            lines += ["", f"Notes ({label}):"] + [f"- {n}" for n in a["notes"]]
+    lines += ["", "## Definitions", ""] + definitions(analyses[0]["settings"])
+    lines += ["", "## Figures", ""] + [f"- {p}" for p in pngs]
+    path = os.path.join(output, "summary.md")
+    with open(path, "w") as f:
+        f.write("\n".join(lines) + "\n")
+    return path, analyses
+
+
+def main(argv=None):
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("cases", nargs="*", help="case directory")
+    parser.add_argument("--compare", nargs="+", metavar="CASE",
+                        help="cases to compare at equal times")
+    parser.add_argument("--labels", nargs="+")
+    parser.add_argument("--output", help="directory for the PNGs and summary.md")
+    parser.add_argument("--times", nargs="+", help="times of the profiles and histograms")
+    parser.add_argument("--dr", type=float, help="annulus width of the crater [m]")
+    parser.add_argument("--dx", type=float, help="slab height of the crater [m]")
+    args = parser.parse_args(argv)
+    if args.compare:
+        cases = args.compare + args.cases
+        labels = args.labels or [os.path.basename(os.path.abspath(c)) for c in cases]
+        if len(labels) != len(cases):
+            sys.exit(f"psi: {len(cases)} cases but {len(labels)} labels")
+        path, _ = compare(cases, labels, args.output or "psiCompare", args.dr, args.dx)
+    else:
+        if len(args.cases) != 1:
+            sys.exit("psi: one CASE (or --compare CASE ...)")
+        path, analysis = run_case(args.cases[0], args.output, args.times, args.dr, args.dx)
+        for n in analysis["notes"]:
+            print(f"psi: note: {n}")
+    print(f"psi: wrote {path}")
+    with open(path) as f:
+        print(f.read())
+
+
+if __name__ == "__main__":
+    main()
