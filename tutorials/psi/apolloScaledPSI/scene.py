@@ -1,0 +1,90 @@
+"""The scene at a few written times: gas number density (batch mean,
+log colour) on the meridional plane, nozzle on top and the lunar surface
+at the bottom, with the grain parcels as dots (a random subset).
+
+    /usr/bin/python3 scene.py [CASE] [--output PNG] [--times N]
+
+Default CASE ".", PNG CASE/apolloScaledPSI.png, N = 3 (the first write
+after 0, the middle one and the last).  Reads system/observablesDict for
+the geometry (as rmf.psi).
+"""
+
+import argparse
+import os
+import sys
+
+import numpy as np
+
+from rmf import foam, psi
+
+MAX_DOTS = 6000
+
+
+def main(argv=None):
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("case", nargs="?", default=".")
+    parser.add_argument("--output")
+    parser.add_argument("--times", type=int, default=3)
+    args = parser.parse_args(argv)
+    case = args.case
+    output = args.output or os.path.join(case, "apolloScaledPSI.png")
+
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    from scipy.interpolate import griddata
+
+    settings = psi.read_settings(case)
+    X_s = settings["surface"]
+    cells = psi.mesh(case)
+    times = [t for t in foam.times(case) if float(t) > 0]
+    if not times:
+        sys.exit(f"scene: {case}: no written time after 0")
+    pick = sorted({times[0], times[len(times)//2], times[-1]})[:args.times]
+
+    fig, axes = plt.subplots(1, len(pick), figsize=(5.2*len(pick), 4.4),
+                             squeeze=False, constrained_layout=True)
+    rng = np.random.default_rng(1)
+    art = None
+    for ax, t in zip(axes[0], pick):
+        rho = psi.field(case, t, "rhoNMean", cells["n"])
+        if rho is None:
+            rho = psi.field(case, t, "rhoN", cells["n"])
+        height = 1e3*(X_s - cells["x"])
+        r = 1e3*cells["r"]
+        if rho is not None:
+            # nearest cell on a regular grid (the wedge's cells are not a
+            # uniform grid); log10 of the density, empty cells blank
+            rmax = 1e3*max(settings["layerRadius"], 3*settings["nozzleRadius"])
+            gr, gh = np.meshgrid(np.linspace(0, rmax, 300),
+                                 np.linspace(0, 1e3*X_s, 200))
+            grid = griddata(np.c_[r, height], rho, (gr, gh), method="nearest")
+            low = 1e-4*rho.max()
+            grid = np.ma.masked_less(grid, low)
+            art = ax.imshow(np.log10(grid), origin="lower", aspect="auto",
+                            extent=(0, rmax, 0, 1e3*X_s), cmap="viridis",
+                            vmin=np.log10(low), vmax=np.log10(rho.max()))
+        p = psi.parcels(case, t)
+        if p is not None:
+            k = np.arange(len(p["pos"]))
+            if len(k) > MAX_DOTS:
+                k = rng.choice(k, MAX_DOTS, replace=False)
+            ax.plot(1e3*psi.radius(p["pos"][k]), 1e3*(X_s - p["pos"][k, 0]),
+                    ",", color="white" if rho is not None else "k", alpha=0.8)
+        ax.axhline(1e3*(X_s - settings["layerTop"]), color="w", lw=0.5, ls=":")
+        ax.plot([0, 1e3*settings["nozzleRadius"]], [1e3*X_s]*2, color="r", lw=3)
+        ax.set_xlim(0, 1e3*max(settings["layerRadius"], 3*settings["nozzleRadius"]))
+        ax.set_ylim(0, 1e3*X_s)
+        ax.set_xlabel("r [mm]")
+        ax.set_ylabel("height above the surface [mm]")
+        ax.set_title(f"t = {1e6*float(t):.3g} us")
+    if art is not None:
+        fig.colorbar(art, ax=axes[0].tolist(), label="log10 gas number density [1/m^3]")
+    fig.suptitle("apolloScaledPSI: water-vapour plume (nozzle in red) and "
+                 "regolith parcels (dots; dotted: initial layer top)")
+    fig.savefig(output, dpi=110)
+    print(f"scene: wrote {output} (times {' '.join(pick)})")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,194 @@
+"""apolloScaledPSI, reduced: the hybrid variant with the demo settings for
+240 steps (12 us, the jet reaches the surface after ~7 us), 3000 parcels,
+written every 120 steps, through the case's Allrun, serially and on 2 METIS
+ranks (-parallel); each run ends with rmf.psi's summary.  About a minute.
+
+Checks (each able to fail):
+- Nozzle flux: the simulators inserted through `nozzle` in N steps (log
+  "Simulators inserted through nozzle = step / total") equal
+  N dt sum_f n A_f Gamma(q)/W over the patch's faces, Gamma Bird's (1994,
+  eq. 4.22) one-sided flux of the exit state of constant/nozzleExit (times
+  settings/demo's densityFactor), computed here; A_f from the wedge's
+  geometry (the x = 0 faces of the nozzle block: triangles of area
+  r_i^2 sin(theta/2) cos(theta/2) between radii r_i).  Tolerance: the
+  number of faces (PatchInflow carries each face's fractional simulator to
+  the next step, so each face's total is the floor or ceiling of its
+  expectation).  The exit state's Gamma is also checked against the
+  flux of a fast stream (n U for q >> 1): q = U/c_mp = 4.3, Gamma/U =
+  1.0, a sanity check on the numbers of constant/nozzleExit.
+- Gas account: the simulators that came in (the account's balance,
+  "Simulators in / out since start") equal those the nozzle inserted,
+  serial and parallel (a simulator lost at a processor boundary or
+  created from nothing would break it), and no "lost away from patches".
+- Grain account: parcels present = initial - out through the patches,
+  no "lost away from patches", serial and parallel.
+- Serial against parallel: the insertion count is deterministic (it uses
+  no random number), so equal; the simulators present agree within 3 %
+  (independent random streams: measured difference below 1 %); the gas
+  account balances in both.
+- The jet acts on the layer: the parcels under the nozzle (r < 8.1 mm)
+  have a mean velocity toward the wall (+x) and those at 8.1-24 mm a mean
+  radial velocity outward, each above 5 standard errors of the parcels'
+  spread (the layer starts at rest; nothing else moves it).
+- The summary exists (rmf.psi ran on the result).
+"""
+
+import math
+import os
+import re
+import shutil
+import subprocess
+
+import numpy as np
+import pytest
+from scipy import special
+
+from rmf import foam
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+BUILD = os.path.join(foam.PROJECT_DIR, "build", "tutorials", "apolloScaledPSI")
+
+K = 1.380649e-23
+M_H2O = 2.99e-26
+LIP = 0.0081
+HALF_ANGLE = math.radians(1.25)
+STEPS = 240
+PARCELS = 3000
+
+
+def entry(case, path, key):
+    """A number (or vector) of a case dictionary, expanded."""
+    out = subprocess.run(["foamDictionary", "-expand", "-entry", key, "-value",
+                          os.path.join(case, path)],
+                         check=True, capture_output=True, text=True).stdout
+    values = [float(v) for v in out.replace("(", " ").replace(")", " ").split()]
+    return values if len(values) > 1 else values[0]
+
+
+def prepare(name):
+    case = os.path.join(BUILD, name)
+    if os.path.exists(case):
+        shutil.rmtree(case)
+    shutil.copytree(HERE, case, ignore=shutil.ignore_patterns(
+        "test_*.py", "__pycache__", "log.*", "observables", "processor*",
+        "[1-9]*", "polyMesh", "lagrangian", "uniform", "*SigmaTcRMax"))
+    subprocess.run([os.path.join(case, "Allclean")], check=True,
+                   stdout=subprocess.DEVNULL)
+    dt = float(foam.get_entry(case, "settings/demo", "deltaT"))
+    foam.set_entry(case, "settings/demo", "endTime", f"{STEPS*dt:.6g}")
+    foam.set_entry(case, "settings/demo", "writeInterval", f"{STEPS*dt/2:.6g}")
+    foam.set_entry(case, "settings/demo", "MPPICDust/nParcels", PARCELS)
+    return case
+
+
+@pytest.fixture(scope="module")
+def runs():
+    out = {}
+    for name, args in (("serial", []), ("parallel", ["-parallel"])):
+        case = prepare(name)
+        proc = subprocess.run([os.path.join(case, "Allrun"), "-variant", "hybrid",
+                               "-settings", "demo"] + args,
+                              cwd=case, capture_output=True, text=True)
+        assert proc.returncode == 0, (name, proc.stdout[-2000:], proc.stderr[-2000:])
+        out[name] = case
+    return out
+
+
+def solver_log(case):
+    return os.path.join(case, "log.rarefiedMultiphaseFoam")
+
+
+def last(log, label):
+    return foam.log_values(log, label)[-1]
+
+
+def expected_insertions(case):
+    """N dt sum_f n A_f Gamma/W for the nozzle faces (blockMesh geometry)."""
+    n = entry(case, "constant/nozzleExit", "nExit") \
+        * entry(case, "settings/demo", "densityFactor")
+    T = entry(case, "constant/nozzleExit", "TExit")
+    U = entry(case, "constant/nozzleExit", "UExit")[0]
+    W = entry(case, "settings/demo", "gasWeight")
+    dt = entry(case, "settings/demo", "deltaT")
+    faces = int(entry(case, "settings/demo", "nRadialNozzle"))
+    cmp = math.sqrt(2*K*T/M_H2O)
+    q = U/cmp
+    gamma = cmp*(math.exp(-q*q) + math.sqrt(math.pi)*q*(1 + special.erf(q))) \
+        / (2*math.sqrt(math.pi))
+    # x = 0 faces of the nozzle block: the wedge slice between radii r_i
+    # (blockMesh: equal spacing along the flat face, r measured along y)
+    r = np.linspace(0, LIP, faces + 1)
+    area = (r[1:]**2 - r[:-1]**2)*math.sin(HALF_ANGLE)*math.cos(HALF_ANGLE)
+    return STEPS*dt*n*gamma*area.sum()/W, faces, q, gamma/U
+
+
+def test_nozzle_flux(runs):
+    expected, faces, q, ratio = expected_insertions(runs["serial"])
+    # A fast stream: Gamma -> U (1 + 1/(2 q^2)) for q >> 1
+    assert q > 3 and abs(ratio - (1 + 0.5/q**2)) < 0.01, (q, ratio)
+    for name, case in runs.items():
+        inserted = last(solver_log(case), "Simulators inserted through nozzle")[1]
+        ok = abs(inserted - expected) < faces
+        print(f"\n{'PASS' if ok else 'FAIL'} apolloScaledPSI {name} nozzle inflow: "
+              f"{inserted:.0f} simulators in {STEPS} steps, expected "
+              f"{expected:.1f} (Bird eq. 4.22), tolerance {faces}")
+        assert ok
+
+
+def test_accounts(runs):
+    for name, case in runs.items():
+        log = solver_log(case)
+        with open(log) as f:
+            text = f.read()
+        assert "lost away from patches" not in text, name
+        inserted = last(log, "Simulators inserted through nozzle")[1]
+        gas_in = last(log, "Simulators in / out since start")[0]
+        assert gas_in == inserted, (name, gas_in, inserted)
+        with open(os.path.join(case, "log.rarefiedMultiphaseInitialise")) as f:
+            initial = float(re.search(r"Solid parcels added: (\d+)", f.read()).group(1))
+        present = last(log, "Parcels present")[0]
+        out = last(log, "Parcels in / out since start")[1]
+        escaped = sum(float(v) for v in re.findall(
+            r"^\s*out through \S+ = (\S+)", text.split("Parcels present")[-1], re.M))
+        ok = present == initial - out and out == escaped
+        print(f"\n{'PASS' if ok else 'FAIL'} apolloScaledPSI {name} accounts: "
+              f"gas in {gas_in:.0f} = inserted {inserted:.0f}; parcels {present:.0f} "
+              f"= {initial:.0f} - {out:.0f} out, no loss")
+        assert ok
+
+
+def test_serial_parallel(runs):
+    s, p = (solver_log(runs[k]) for k in ("serial", "parallel"))
+    ins_s = last(s, "Simulators inserted through nozzle")[1]
+    ins_p = last(p, "Simulators inserted through nozzle")[1]
+    n_s = last(s, "Simulators present")[0]
+    n_p = last(p, "Simulators present")[0]
+    dev = abs(n_p - n_s)/n_s
+    ok = ins_s == ins_p and dev < 0.03
+    print(f"\n{'PASS' if ok else 'FAIL'} apolloScaledPSI serial/parallel: inserted "
+          f"{ins_s:.0f} / {ins_p:.0f}, simulators present {n_s:.0f} / {n_p:.0f} "
+          f"({100*dev:.2f} %, tolerance 3 %)")
+    assert ok
+
+
+def test_jet_moves_layer(runs):
+    case = runs["serial"]
+    t = foam.latest_time(case)
+    base = os.path.join(case, t, "lagrangian", "grains")
+    pos = foam.read_positions(os.path.join(base, "positions"))
+    U = foam.read_list(os.path.join(base, "U"))
+    r = np.hypot(pos[:, 1], pos[:, 2])
+    ur = (pos[:, 1]*U[:, 1] + pos[:, 2]*U[:, 2])/np.maximum(r, 1e-30)
+    for what, sel, v in (("U_x under the nozzle", r < LIP, U[:, 0]),
+                         ("U_r at 8.1-24 mm", (r >= LIP) & (r < 3*LIP), ur)):
+        vs = v[sel]
+        mean, se = vs.mean(), vs.std()/math.sqrt(len(vs))
+        ok = mean > 5*se
+        print(f"\n{'PASS' if ok else 'FAIL'} apolloScaledPSI {what}: "
+              f"{mean:.3g} m/s over {len(vs)} parcels (5 se = {5*se:.2g})")
+        assert ok
+
+
+def test_summary(runs):
+    for case in runs.values():
+        assert os.path.getsize(os.path.join(case, "observables", "summary.md")) > 0
