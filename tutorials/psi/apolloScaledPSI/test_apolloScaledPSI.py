@@ -13,19 +13,21 @@ Checks (each able to fail):
   r_i^2 sin(theta/2) cos(theta/2) between radii r_i).  Tolerance: the
   number of faces (PatchInflow carries each face's fractional simulator to
   the next step, so each face's total is the floor or ceiling of its
-  expectation).  The exit state's Gamma is also checked against the
-  flux of a fast stream (n U for q >> 1): q = U/c_mp = 4.3, Gamma/U =
-  1.0, a sanity check on the numbers of constant/nozzleExit.
+  expectation).  Measured on the gas alone (300 steps): 40 910 serial,
+  40 911 on 2 ranks, expected 40 910.9.  The exit state is a fast stream
+  (q = U/c_mp = 4.3): Gamma = U to 1e-6 (the backward tail exp(-q^2) is
+  1e-8), a check on the numbers of constant/nozzleExit.
 - Gas account: the simulators that came in (the account's balance,
   "Simulators in / out since start") equal those the nozzle inserted,
   serial and parallel (a simulator lost at a processor boundary or
   created from nothing would break it), and no "lost away from patches".
 - Grain account: parcels present = initial - out through the patches,
   no "lost away from patches", serial and parallel.
-- Serial against parallel: the insertion count is deterministic (it uses
-  no random number), so equal; the simulators present agree within 3 %
-  (independent random streams: measured difference below 1 %); the gas
-  account balances in both.
+- Serial against parallel: both insertion counts within the number of
+  nozzle faces of each other (each is within it of the expectation;
+  measured on the gas alone: 40 910 serial, 40 911 on 2 ranks after 300
+  steps); the simulators present agree within 3 % (independent random
+  streams: measured 0.4 % on the gas alone after 300 steps).
 - The jet acts on the layer: the parcels under the nozzle (r < 8.1 mm)
   have a mean velocity toward the wall (+x) and those at 8.1-24 mm a mean
   radial velocity outward, each above 5 standard errors of the parcels'
@@ -57,8 +59,9 @@ PARCELS = 3000
 
 
 def entry(case, path, key):
-    """A number (or vector) of a case dictionary, expanded."""
-    out = subprocess.run(["foamDictionary", "-expand", "-entry", key, "-value",
+    """A number (or vector) of a case dictionary (#include, #eval and $
+    macros evaluated)."""
+    out = subprocess.run(["foamDictionary", "-entry", key, "-value",
                           os.path.join(case, path)],
                          check=True, capture_output=True, text=True).stdout
     values = [float(v) for v in out.replace("(", " ").replace(")", " ").split()]
@@ -77,7 +80,10 @@ def prepare(name):
     dt = float(foam.get_entry(case, "settings/demo", "deltaT"))
     foam.set_entry(case, "settings/demo", "endTime", f"{STEPS*dt:.6g}")
     foam.set_entry(case, "settings/demo", "writeInterval", f"{STEPS*dt/2:.6g}")
-    foam.set_entry(case, "settings/demo", "MPPICDust/nParcels", PARCELS)
+    # (foamDictionary -set rewrites the file with hybridDust's $MPPICDust
+    # expanded: set both)
+    for dust in ("MPPICDust", "hybridDust"):
+        foam.set_entry(case, "settings/demo", f"{dust}/nParcels", PARCELS)
     return case
 
 
@@ -104,13 +110,14 @@ def last(log, label):
 
 def expected_insertions(case):
     """N dt sum_f n A_f Gamma/W for the nozzle faces (blockMesh geometry)."""
-    n = entry(case, "constant/nozzleExit", "nExit") \
-        * entry(case, "settings/demo", "densityFactor")
-    T = entry(case, "constant/nozzleExit", "TExit")
-    U = entry(case, "constant/nozzleExit", "UExit")[0]
-    W = entry(case, "settings/demo", "gasWeight")
-    dt = entry(case, "settings/demo", "deltaT")
-    faces = int(entry(case, "settings/demo", "nRadialNozzle"))
+    props = "constant/dsmcProperties"
+    nozzle = "PatchInflowCoeffs/nozzle/"
+    n = entry(case, props, nozzle + "n")        # nExit x densityFactor
+    T = entry(case, props, nozzle + "T")
+    U = entry(case, props, nozzle + "U")[0]
+    W = entry(case, props, "nEquivalentParticles")
+    dt = entry(case, "system/controlDict", "deltaT")
+    faces = int(entry(case, "system/blockMeshDict", "nRadialNozzle"))
     cmp = math.sqrt(2*K*T/M_H2O)
     q = U/cmp
     gamma = cmp*(math.exp(-q*q) + math.sqrt(math.pi)*q*(1 + special.erf(q))) \
@@ -124,8 +131,8 @@ def expected_insertions(case):
 
 def test_nozzle_flux(runs):
     expected, faces, q, ratio = expected_insertions(runs["serial"])
-    # A fast stream: Gamma -> U (1 + 1/(2 q^2)) for q >> 1
-    assert q > 3 and abs(ratio - (1 + 0.5/q**2)) < 0.01, (q, ratio)
+    # A fast stream: Gamma -> U for q >> 1
+    assert q > 3 and abs(ratio - 1) < 1e-6, (q, ratio)
     for name, case in runs.items():
         inserted = last(solver_log(case), "Simulators inserted through nozzle")[1]
         ok = abs(inserted - expected) < faces
@@ -164,7 +171,8 @@ def test_serial_parallel(runs):
     n_s = last(s, "Simulators present")[0]
     n_p = last(p, "Simulators present")[0]
     dev = abs(n_p - n_s)/n_s
-    ok = ins_s == ins_p and dev < 0.03
+    faces = expected_insertions(runs["serial"])[1]
+    ok = abs(ins_s - ins_p) < faces and dev < 0.03
     print(f"\n{'PASS' if ok else 'FAIL'} apolloScaledPSI serial/parallel: inserted "
           f"{ins_s:.0f} / {ins_p:.0f}, simulators present {n_s:.0f} / {n_p:.0f} "
           f"({100*dev:.2f} %, tolerance 3 %)")
