@@ -169,6 +169,43 @@ def mesh(case):
     return dict(C=C, x=C[:, 0], r=radius(C), n=len(C))
 
 
+def _list_body(path):
+    """Text between the brackets of an ASCII list file (faces, owner)."""
+    with open(path, "rb") as f:
+        text = f.read()
+    m = re.search(rb"\n(\d+)\s*\n\(", text)
+    if not m:
+        raise ValueError(f"{path}: no ASCII list")
+    return int(m.group(1)), text[m.end():text.rindex(b")")]
+
+
+def meridian_cells(case):
+    """Outline of every cell on the meridian plane, (x, r) polygons, from
+    the faces of the mesh's first wedge patch (one per cell), or None when
+    the mesh has no wedge patch or is not written in ASCII."""
+    mesh_dir = os.path.join(case, "constant", "polyMesh")
+    try:
+        with open(os.path.join(mesh_dir, "boundary")) as f:
+            boundary = f.read()
+        m = re.search(r"\{[^{}]*type\s+wedge;[^{}]*\}", boundary)
+        if not m:
+            return None
+        n_faces = int(re.search(r"nFaces\s+(\d+);", m.group(0)).group(1))
+        start = int(re.search(r"startFace\s+(\d+);", m.group(0)).group(1))
+        points = foam.read_list(os.path.join(mesh_dir, "points")).reshape(-1, 3)
+        _, body = _list_body(os.path.join(mesh_dir, "faces"))
+        faces = re.findall(rb"\d+\(([^)]*)\)", body)[start:start + n_faces]
+        _, body = _list_body(os.path.join(mesh_dir, "owner"))
+        owner = np.array(body.split(), int)[start:start + n_faces]
+    except (OSError, ValueError, AttributeError, IndexError):
+        return None
+    polygons = [None]*(owner.max() + 1 if len(owner) else 0)
+    for cell, face in zip(owner, faces):
+        pts = points[np.array(face.split(), int)]
+        polygons[cell] = np.stack([pts[:, 0], np.hypot(pts[:, 1], pts[:, 2])], -1)
+    return polygons
+
+
 def field(case, time, name, ncells):
     """Internal field at time, or None when not written."""
     path = os.path.join(case, time, name)
@@ -451,7 +488,8 @@ def analyse(case, dr=None, dx=None, shell=SHELL):
     if reference is None:
         notes.append(f"no {CLOUD} parcels at any time: grain observables n/a")
     return dict(case=case, settings=settings, cells=cells, rows=rows, notes=notes,
-                reference=reference[0] if reference else None)
+                reference=reference[0] if reference else None,
+                polygons=meridian_cells(case))
 
 
 def _get(row, key, sub):
@@ -623,7 +661,7 @@ def plot_crater(ax, analysis, rows, title=None):
         c = r.get("crater")
         if c is None:
             continue
-        ax.step(1e3*c["r"], 1e3*c["height"], where="mid", label=f"t = {r['time']} s")
+        ax.stairs(1e3*c["height"], 1e3*c["r_edges"], label=f"t = {r['time']} s")
     ax.axvline(1e3*s["nozzleRadius"], color="0.7", linestyle=":", label="nozzle radius")
     ax.set_xlabel("r [mm]")
     ax.set_ylabel("dust surface height above the wall [mm]")
@@ -661,20 +699,38 @@ def plot_knp(ax, fig, analysis, row, title=None):
                 transform=ax.transAxes)
         return
     s, cells = analysis["settings"], analysis["cells"]
-    height = 1e3*(s["surface"] - cells["x"])
-    r = 1e3*cells["r"]
-    triangles = mtri.Triangulation(r, height)
-    bad = ~(knp > 0)
-    triangles.set_mask(bad[triangles.triangles].any(axis=1))
     positive = knp[knp > 0]
     norm = colors.LogNorm(vmin=positive.min(), vmax=max(positive.max(), positive.min()*1.01))
-    art = ax.tripcolor(triangles, np.where(bad, positive.min(), knp), norm=norm,
-                       shading="gouraud", cmap="viridis")
+    polygons = analysis.get("polygons")
+    if polygons is not None and len(polygons) == len(knp):
+        from matplotlib.collections import PolyCollection
+        show = np.nonzero(knp > 0)[0]
+        art = PolyCollection([np.stack([1e3*polygons[i][:, 1],
+                                        1e3*(s["surface"] - polygons[i][:, 0])], -1)
+                              for i in show], array=knp[show], norm=norm, cmap="viridis",
+                             edgecolors="face", linewidths=0.2)
+        ax.add_collection(art)
+        outline = np.concatenate(polygons)
+        ax.set_xlim(0, 1e3*outline[:, 1].max())
+        ax.set_ylim(1e3*(s["surface"] - outline[:, 0].max()),
+                    1e3*(s["surface"] - outline[:, 0].min()))
+    else:           # no wedge outline: interpolated between cell centres
+        height = 1e3*(s["surface"] - cells["x"])
+        triangles = mtri.Triangulation(1e3*cells["r"], height)
+        bad = ~(knp > 0)
+        triangles.set_mask(bad[triangles.triangles].any(axis=1))
+        art = ax.tripcolor(triangles, np.where(bad, positive.min(), knp), norm=norm,
+                           shading="gouraud", cmap="viridis")
+    ax.axvline(1e3*s["nozzleRadius"], color="0.6", linestyle=":", linewidth=0.8)
+    shock = row.get("shock")
+    if shock and shock.get("standoff") is not None:
+        ax.axhline(1e3*shock["standoff"], color="0.4", linestyle="--", linewidth=0.8)
     fig.colorbar(art, ax=ax, label=r"Kn$_p$ = $\lambda$/d$_p$")
     ax.set_xlabel("r [mm]")
     ax.set_ylabel("height above the surface [mm]")
     ax.set_aspect("equal")
-    ax.set_title(title or f"Kn_p, t = {row['time']} s ({row['knp_source']})", fontsize=9)
+    ax.set_title(title or f"Kn_p, t = {row['time']} s ({row['knp_source']})\n"
+                 "dashed: shock; dotted: nozzle radius", fontsize=9)
 
 
 TIMESERIES = (
