@@ -456,3 +456,17 @@ def test_compare(case):
         assert os.path.getsize(os.path.join(out, name)) > 0, name
     assert len(re.findall(r"^\| MPPIC \|", text, re.M)) == 2
     assert not re.search(r"\bnan\b", text, re.I)
+
+
+def test_flat_or_empty_data_give_notes_not_nan(tmp_path):
+    """A zero density (an initial rhoN) has no shock; an empty positions
+    file ("0()", a cloud that emptied) holds no parcel."""
+    x = np.linspace(0.25e-3, 19.75e-3, 40)
+    for rho in (np.zeros_like(x), np.full_like(x, 1e20)):
+        shock = psi.shock_standoff(x, rho, X_S)
+        assert shock["standoff"] is None and "no rise" in shock["note"], shock
+    base = tmp_path / "0" / "lagrangian" / "grains"
+    base.mkdir(parents=True)
+    (base / "positions").write_text(HEADER.format(cls="Cloud<solidParcel>", name="positions")
+                                    + "0()\n")
+    assert psi.parcels(str(tmp_path), "0") is None

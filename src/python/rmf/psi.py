@@ -306,9 +306,10 @@ def shock_standoff(x, rho, surface, smooth=SMOOTH_CELLS, rise=SHOCK_RISE):
     if i >= len(s) - 2:
         return dict(standoff=None, note="density falls all the way to the surface")
     post = float(np.median(s[i + 1:]))
-    if post < rise*jet:
+    if not (post > 0 and post >= rise*jet):
         return dict(standoff=None,
-                    note=f"post-shock density {post:.3g} below {rise} x jet {jet:.3g}")
+                    note=f"no rise to {rise} x the jet density after its minimum "
+                         f"(jet {jet:.3g}, downstream median {post:.3g})")
     mid = 0.5*(jet + post)
     k = i + 1 + int(np.nonzero(s[i + 1:] >= mid)[0][0])
     x_shock = x[k - 1] + (mid - s[k - 1])*(x[k] - x[k - 1])/(s[k] - s[k - 1])
@@ -521,9 +522,10 @@ def value(row, key, sub):
     """One number of a row (None when not available)."""
     if key is None:
         return row["t"]
-    if sub is None:
-        return row.get(key)
-    return _get(row, key, sub)
+    v = row.get(key) if sub is None else _get(row, key, sub)
+    if isinstance(v, float) and not math.isfinite(v):
+        return None         # never reported as a number (see the notes)
+    return v
 
 
 def series(analysis, key, sub):
