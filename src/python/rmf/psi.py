@@ -349,6 +349,7 @@ def speeds(p, settings):
     sel = ejecta(p, settings)
     out = dict(speed=speed, weight=p["n"], mean=float(np.average(speed, weights=p["n"])),
                max=float(speed.max()), ejecta=int(sel.sum()),
+               ejecta_speed=speed[sel], ejecta_weight=p["n"][sel],
                ejecta_mean=None, ejecta_max=None)
     if sel.any():
         out["ejecta_mean"] = float(np.average(speed[sel], weights=p["n"][sel]))
@@ -676,9 +677,11 @@ def plot_crater(ax, analysis, rows, title=None):
 
 def plot_histogram(ax, rows, key, values, weights, xlabel, bins=40, span=None):
     """Real-grain (or mass) fraction per bin, one step line per row."""
-    data = [(r, r.get(key)) for r in rows if r.get(key) is not None]
+    data = [(r, r[key]) for r in rows if r.get(key) is not None
+            and r[key].get(values) is not None and len(r[key][values])]
     if not data:
-        ax.text(0.5, 0.5, f"no {key} data", ha="center", transform=ax.transAxes)
+        ax.text(0.5, 0.5, f"no {values} data at these times", ha="center",
+                transform=ax.transAxes)
         return
     if span is None:
         lo = min(d[values].min() for _, d in data)
@@ -687,13 +690,15 @@ def plot_histogram(ax, rows, key, values, weights, xlabel, bins=40, span=None):
     edges = np.linspace(span[0], span[1], bins + 1)
     for r, d in data:
         h, _ = np.histogram(d[values], edges, weights=d[weights])
-        ax.step(edges[:-1], h/h.sum(), where="post", label=f"t = {r['time']} s")
+        ax.stairs(h/max(h.sum(), 1e-300), edges, label=f"t = {r['time']} s")
     ax.set_xlabel(xlabel)
     ax.grid(alpha=0.3)
     ax.legend(fontsize=7)
 
 
-def plot_knp(ax, fig, analysis, row, title=None):
+def plot_knp(ax, fig, analysis, row, title=None, span=None):
+    """Kn_p map on the (r, height) plane, log colours (over span when
+    given: one scale for the cases of a comparison)."""
     from matplotlib import colors, tri as mtri
     knp = row.get("knp") if row else None
     if knp is None or not (knp > 0).any():
@@ -702,7 +707,8 @@ def plot_knp(ax, fig, analysis, row, title=None):
         return
     s, cells = analysis["settings"], analysis["cells"]
     positive = knp[knp > 0]
-    norm = colors.LogNorm(vmin=positive.min(), vmax=max(positive.max(), positive.min()*1.01))
+    lo, hi = span or (positive.min(), positive.max())
+    norm = colors.LogNorm(vmin=lo, vmax=max(hi, lo*1.01))
     polygons = analysis.get("polygons")
     if polygons is not None and len(polygons) == len(knp):
         from matplotlib.collections import PolyCollection
@@ -807,10 +813,15 @@ def plot_case(analysis, output, wanted=None):
     ax.set_ylabel("mass fraction of the ejecta")
     save(fig, "ejection_angle.png")
 
-    fig, ax = plt.subplots(figsize=(7, 4.5), constrained_layout=True)
+    fig, (ax, ax_e) = plt.subplots(1, 2, figsize=(12, 4.5), constrained_layout=True)
     plot_histogram(ax, rows, "speeds", "speed", "weight", "grain speed |U| [m/s]")
     ax.set_ylabel("fraction of the real grains")
     ax.set_yscale("log")
+    ax.set_title("all grains")
+    plot_histogram(ax_e, rows, "speeds", "ejecta_speed", "ejecta_weight",
+                   "ejecta speed |U| [m/s]")
+    ax_e.set_ylabel("fraction of the ejecta's real grains")
+    ax_e.set_title("ejecta (x < layerTop, U_x < 0)")
     save(fig, "speed_histogram.png")
 
     fig, ax = plt.subplots(figsize=(7, 4.5), constrained_layout=True)
@@ -903,13 +914,17 @@ def compare(cases, labels, output, dr=None, dx=None):
     for name, key, values, weights, xlabel, span, ylabel in (
             ("compare_speed.png", "speeds", "speed", "weight", "grain speed |U| [m/s]",
              None, "fraction of the real grains"),
+            ("compare_ejecta_speed.png", "speeds", "ejecta_speed", "ejecta_weight",
+             "ejecta speed |U| [m/s]", None, "fraction of the ejecta's real grains"),
             ("compare_ejection_angle.png", "angles", "angle", "weight",
              "ejection angle above the surface [deg]", (0, 90), "mass fraction of the ejecta"),
             ("compare_Tp.png", "T", "T", "weight", "grain temperature T_p [K]", None,
              "fraction of the real grains")):
         rows = [[nearest_row(a, t) for t in shown] for a in analyses]
         if span is None:
-            data = [r[key][values] for rr in rows for r in rr if r and r.get(key)]
+            data = [r[key][values] for rr in rows for r in rr
+                    if r and r.get(key) and r[key].get(values) is not None
+                    and len(r[key][values])]
             span = (min(d.min() for d in data), max(d.max() for d in data)) if data else None
             if span and span[1] <= span[0]:
                 span = (span[0], span[0] + 1)
@@ -919,15 +934,20 @@ def compare(cases, labels, output, dr=None, dx=None):
             plot_histogram(ax, rr, key, values, weights, xlabel,
                            bins=18 if key == "angles" else 40, span=span)
             ax.set_title(label)
+            if values == "speed":
+                ax.set_yscale("log")     # the resting layer dwarfs the ejecta
         axes[0, 0].set_ylabel(ylabel)
         save(fig, name)
 
     t_knp = shown[-1] if shown else (common[-1] if common else None)
     fig, axes = plt.subplots(1, ncol, figsize=(5*ncol, 4.5), squeeze=False,
                              constrained_layout=True)
-    for ax, a, label in zip(axes[0], analyses, labels):
-        row = nearest_row(a, t_knp) if t_knp is not None else None
-        plot_knp(ax, fig, a, row, f"{label}: Kn_p, t = {row['time'] if row else 'n/a'} s")
+    knp_rows = [nearest_row(a, t_knp) if t_knp is not None else None for a in analyses]
+    positive = [r["knp"][r["knp"] > 0] for r in knp_rows
+                if r and r.get("knp") is not None and (r["knp"] > 0).any()]
+    span = (min(k.min() for k in positive), max(k.max() for k in positive)) if positive else None
+    for ax, a, row, label in zip(axes[0], analyses, knp_rows, labels):
+        plot_knp(ax, fig, a, row, f"{label}: Kn_p, t = {row['time'] if row else 'n/a'} s", span)
     save(fig, "compare_knp.png")
 
     lines = ["# Plume-surface interaction: comparison", ""]
