@@ -470,3 +470,11 @@ def test_flat_or_empty_data_give_notes_not_nan(tmp_path):
     (base / "positions").write_text(HEADER.format(cls="Cloud<solidParcel>", name="positions")
                                     + "0()\n")
     assert psi.parcels(str(tmp_path), "0") is None
+
+
+def test_radial_weight(case):
+    """--radial-weight W R: real grains = nParticle (1 + (W - 1) r/R)."""
+    g = layer("0")
+    r = np.hypot(g["pos"][:, 1], g["pos"][:, 2])
+    p = psi.parcels(case, "0", radial_weight=(10, 0.05))
+    assert p["n"].sum() == pytest.approx((g["nParticle"]*(1 + 9*r/0.05)).sum(), rel=1e-9)

@@ -115,9 +115,12 @@ def read_settings(case):
     return {k: float(entries[k]) for k in SETTINGS}
 
 
-def parcels(case, time, cloud=CLOUD):
+def parcels(case, time, cloud=CLOUD, radial_weight=None):
     """Parcels at time as a dict (pos, cell, U, n, and d, T when written),
-    or None when the time has no parcel of the cloud."""
+    or None when the time has no parcel of the cloud.  n: real grains per
+    parcel, nParticle; times RWF(r) = 1 + (W - 1) r/R when radial_weight =
+    (W, R) is given (parcels weighted by radius implicitly, as the gas's
+    simulators: SPEC.md 6)."""
     base = os.path.join(case, time, "lagrangian", cloud)
     if not os.path.exists(os.path.join(base, "positions")):
         return None
@@ -139,6 +142,9 @@ def parcels(case, time, cloud=CLOUD):
         if len(values) != len(pos):
             raise ValueError(f"{path}: {len(values)} values for {len(pos)} parcels")
         p[key] = values
+    if radial_weight is not None:
+        W, R = radial_weight
+        p["n"] = p["n"]*(1 + (W - 1)*radius(pos)/R)
     return p
 
 
@@ -432,7 +438,7 @@ def temperatures(p):
 
 # ----------------------------------------------------------- analysis ----
 
-def analyse(case, dr=None, dx=None, shell=SHELL):
+def analyse(case, dr=None, dx=None, shell=SHELL, radial_weight=None):
     """Every observable at every written time: dict(case, settings, cells,
     times [rows], notes, reference time)."""
     settings = read_settings(case)
@@ -440,7 +446,7 @@ def analyse(case, dr=None, dx=None, shell=SHELL):
     rows, notes, reference = [], [], None
     for t in foam.times(case):
         row = dict(time=t, t=float(t))
-        p = parcels(case, t)
+        p = parcels(case, t, radial_weight=radial_weight)
         row["p"] = p
         if p is None:
             notes.append(f"t = {t}: no {CLOUD} parcels written: grain observables n/a")
@@ -491,6 +497,7 @@ def analyse(case, dr=None, dx=None, shell=SHELL):
         notes.append(f"no {CLOUD} parcels at any time: grain observables n/a")
     return dict(case=case, settings=settings, cells=cells, rows=rows, notes=notes,
                 reference=reference[0] if reference else None,
+                options=dict(dr=dr, dx=dx, shell=shell, radial_weight=radial_weight),
                 polygons=meridian_cells(case))
 
 
@@ -611,19 +618,36 @@ def key_numbers(analysis):
     return out
 
 
-def definitions(settings):
+def definitions(analysis):
+    """Definitions of the observables with this run's bins and options."""
+    s, o = analysis["settings"], analysis["options"]
+    r_edges, dx, _, H = _bins(s, o["dr"], o["dx"])
+    weight = "nParticle"
+    if o["radial_weight"]:
+        W, R = o["radial_weight"]
+        weight = f"nParticle x (1 + ({W:g} - 1) r/{R:g} m)"
     return [
-        "Definitions (rmf/psi.py docstring): crater depth = initial layer height "
-        "H = X_s - layerTop minus the dust thickness above the wall in an annulus "
-        "(real grains of the slabs from the wall up to the first slab below 0.5 of "
-        "the initial density, over the initial density); shock = midpoint rise of "
-        "the axis density between the jet minimum and the post-shock median "
-        "(3-cell running mean), standoff = X_s - x_shock; ejecta = parcels with "
-        "x < layerTop and U_x < 0, angle = atan2(-U_x, |U_yz|), mass-weighted; "
-        f"crossing = real grains within {SHELL*1e3:g} mm of r = "
-        f"{settings['crossingRadius']*1e3:g} mm, flux-weighted sum(w|v_r|) by sign "
-        "of v_r; Kn_p stagnation region = r <= nozzleRadius, between shock and "
-        "surface; every statistic weighted by nParticle.",
+        f"- Real grains of a parcel: {weight}; every statistic is weighted by them "
+        "(ejection angle: by mass, real grains x d^3).",
+        f"- Crater: annuli of {1e3*(r_edges[1] - r_edges[0]):.3g} mm to r = "
+        f"{1e3*r_edges[-1]:.3g} mm, slabs of {1e3*dx:.3g} mm from the wall up; dust "
+        f"thickness = real grains of the slabs up to the first one below "
+        f"{SURFACE_FRACTION} of the initial density (included), over the initial "
+        f"density (time {analysis['reference']} s); depth = H - thickness, "
+        f"H = X_s - layerTop = {1e3*H:.3g} mm; crater depth = max over the annuli.",
+        f"- Shock: axis cells (radius < {AXIS_FACTOR} x the smallest), "
+        f"{SMOOTH_CELLS}-cell running mean of rhoN (else rhoM); where it rises "
+        "through the midpoint of the jet minimum and the median downstream of it; "
+        f"none below a {SHOCK_RISE}x rise; standoff = X_s - x_shock.",
+        "- Ejecta: parcels with x < layerTop and U_x < 0; ejection angle = "
+        "atan2(-U_x, sqrt(U_y^2 + U_z^2)) above the surface.",
+        f"- Crossing: real grains within {1e3*o['shell']:g} mm of r = "
+        f"{1e3*s['crossingRadius']:g} mm; toward the axis (flux) = sum(w |v_r|) over "
+        "v_r < 0 / sum(w |v_r|) (fraction of the crossings per unit time); "
+        "(grains) = real grains with v_r < 0 over those with v_r != 0.",
+        "- Kn_p: Knp.grains (else lambda.gas / real-grain mean d in the cell); "
+        f"stagnation region: r <= nozzleRadius, height <= shock standoff "
+        f"({1e3*STAGNATION_HEIGHT:g} mm without a shock).",
     ]
 
 
@@ -850,7 +874,7 @@ def write_summary(analysis, output, pngs):
     lines += key_numbers(analysis)
     lines += ["", "## Values against time", ""]
     lines += table(analysis["rows"])
-    lines += ["", "## Definitions", ""] + definitions(s)
+    lines += ["", "## Definitions", ""] + definitions(analysis)
     lines += ["", "## Notes", ""] + ([f"- {n}" for n in analysis["notes"]] or ["- none"])
     lines += ["", "## Figures", ""] + [f"- {p}" for p in pngs]
     path = os.path.join(output, "summary.md")
@@ -859,9 +883,9 @@ def write_summary(analysis, output, pngs):
     return path
 
 
-def run_case(case, output=None, wanted=None, dr=None, dx=None):
+def run_case(case, output=None, wanted=None, **options):
     output = output or os.path.join(case, "observables")
-    analysis = analyse(case, dr, dx)
+    analysis = analyse(case, **options)
     pngs = plot_case(analysis, output, wanted)
     return write_summary(analysis, output, pngs), analysis
 
@@ -879,11 +903,11 @@ def common_times(analyses):
     return first, False
 
 
-def compare(cases, labels, output, dr=None, dx=None):
+def compare(cases, labels, output, **options):
     """Side-by-side plots and summary of several cases at equal times."""
     plt = _plt()
     os.makedirs(output, exist_ok=True)
-    analyses = [analyse(c, dr, dx) for c in cases]
+    analyses = [analyse(c, **options) for c in cases]
     common, exact = common_times(analyses)
     # the common times with parcels in every case, up to HISTOGRAM_TIMES of them
     with_parcels = [t for t in common
@@ -969,7 +993,7 @@ def compare(cases, labels, output, dr=None, dx=None):
         lines += ["", f"## Key numbers: {label}", ""] + key_numbers(a)
         if a["notes"]:
             lines += ["", f"Notes ({label}):"] + [f"- {n}" for n in a["notes"]]
-    lines += ["", "## Definitions", ""] + definitions(analyses[0]["settings"])
+    lines += ["", "## Definitions", ""] + definitions(analyses[0])
     lines += ["", "## Figures", ""] + [f"- {p}" for p in pngs]
     path = os.path.join(output, "summary.md")
     with open(path, "w") as f:
@@ -987,17 +1011,22 @@ def main(argv=None):
     parser.add_argument("--times", nargs="+", help="times of the profiles and histograms")
     parser.add_argument("--dr", type=float, help="annulus width of the crater [m]")
     parser.add_argument("--dx", type=float, help="slab height of the crater [m]")
+    parser.add_argument("--shell", type=float, default=SHELL,
+                        help="half width of the crossing shell [m]")
+    parser.add_argument("--radial-weight", nargs=2, type=float, metavar=("W", "R"),
+                        help="parcels carry the implicit radial weight 1 + (W-1) r/R")
     args = parser.parse_args(argv)
+    options = dict(dr=args.dr, dx=args.dx, shell=args.shell, radial_weight=args.radial_weight)
     if args.compare:
         cases = args.compare + args.cases
         labels = args.labels or [os.path.basename(os.path.abspath(c)) for c in cases]
         if len(labels) != len(cases):
             sys.exit(f"psi: {len(cases)} cases but {len(labels)} labels")
-        path, _ = compare(cases, labels, args.output or "psiCompare", args.dr, args.dx)
+        path, _ = compare(cases, labels, args.output or "psiCompare", **options)
     else:
         if len(args.cases) != 1:
             sys.exit("psi: one CASE (or --compare CASE ...)")
-        path, analysis = run_case(args.cases[0], args.output, args.times, args.dr, args.dx)
+        path, analysis = run_case(args.cases[0], args.output, args.times, **options)
         for n in analysis["notes"]:
             print(f"psi: note: {n}")
     print(f"psi: wrote {path}")
