@@ -478,3 +478,14 @@ def test_radial_weight(case):
     r = np.hypot(g["pos"][:, 1], g["pos"][:, 2])
     p = psi.parcels(case, "0", radial_weight=(10, 0.05))
     assert p["n"].sum() == pytest.approx((g["nParticle"]*(1 + 9*r/0.05)).sum(), rel=1e-9)
+
+
+def test_cli_without_settings(tmp_path):
+    """A case without system/observablesDict stops with a message naming it."""
+    (tmp_path / "system").mkdir()
+    (tmp_path / "0").mkdir()
+    env = dict(os.environ, PYTHONPATH=os.path.join(foam.PROJECT_DIR, "src", "python"))
+    proc = subprocess.run([sys.executable, "-m", "rmf.psi", str(tmp_path)], env=env,
+                          capture_output=True, text=True)
+    assert proc.returncode != 0
+    assert "observablesDict: missing" in proc.stderr, proc.stderr

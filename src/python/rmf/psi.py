@@ -36,7 +36,8 @@ Observables, each a function of this module:
    above the wall h(r) = thickness; crater depth d(r) = H - h(r) (how far
    the surface has receded below the initial layer top; negative: a
    rim raised above it); the crater depth is max over the annuli of d(r).
-2. Shock standoff (shock_standoff).  Number density (rhoN, else rhoM) in
+2. Shock standoff (shock_standoff).  Gas density (the first written of
+   rhoNMean, rhoN, rhoMMean, rhoM) in
    the cells nearest the axis (centre radius below 1.5 times the smallest
    one), averaged per x and smoothed by a 3-cell running mean.  Jet
    density: the minimum of the smoothed profile upstream of the surface;
@@ -79,6 +80,7 @@ import argparse
 import math
 import os
 import re
+import subprocess
 import sys
 
 import numpy as np
@@ -94,6 +96,9 @@ SMOOTH_CELLS = 3                # running mean along the axis
 SHELL = 0.5e-3                  # half width of the crossing shell [m]
 STAGNATION_HEIGHT = 5e-3        # stagnation region height without a shock [m]
 HISTOGRAM_TIMES = 4             # default number of times in the histograms
+# Gas density for the shock, first found: time averages before the
+# instantaneous sample (one step's simulators: noisier)
+DENSITIES = ("rhoNMean", "rhoN", "rhoMMean", "rhoM")
 
 
 # --------------------------------------------------------------- input ----
@@ -169,9 +174,9 @@ def mesh(case):
     written = [t for t in names if os.path.exists(os.path.join(case, t, "C"))]
     try:
         C = foam.cell_centres(case, written[0] if written else names[0])
-    except FileNotFoundError as error:
-        raise SystemExit(f"psi: {case}: no cell centres and no postProcess to write "
-                         f"them (source etc/bashrc): {error}")
+    except (FileNotFoundError, subprocess.CalledProcessError) as error:
+        raise RuntimeError(f"{case}: no cell centres (a C field) and postProcess "
+                           f"could not write them (source etc/bashrc): {error}")
     return dict(C=C, x=C[:, 0], r=radius(C), n=len(C))
 
 
@@ -466,16 +471,19 @@ def analyse(case, dr=None, dx=None, shell=SHELL, radial_weight=None):
             row["T"] = temperatures(p)
             if row["T"] is None:
                 notes.append(f"t = {t}: no parcel temperature T written")
-        rho = field(case, t, "rhoN", cells["n"])
+        rho, name = None, None
+        for name in DENSITIES:
+            rho = field(case, t, name, cells["n"])
+            if rho is not None:
+                break
         if rho is None:
-            rho = field(case, t, "rhoM", cells["n"])
-        if rho is None:
-            notes.append(f"t = {t}: no gas density (rhoN, rhoM): shock n/a")
+            notes.append(f"t = {t}: no gas density ({', '.join(DENSITIES)}): shock n/a")
             row["shock"] = None
         else:
             x, values = axis_profile(cells["x"], cells["r"], rho)
             row["axis"] = (x, values)
             row["shock"] = shock_standoff(x, values, settings["surface"])
+            row["shock"]["field"] = name
             if row["shock"]["standoff"] is None:
                 notes.append(f"t = {t}: no shock on the axis ({row['shock']['note']})")
         row["alpha"] = max_alpha(field(case, t, "alpha." + CLOUD, cells["n"]))
@@ -636,7 +644,7 @@ def definitions(analysis):
         f"density (time {analysis['reference']} s); depth = H - thickness, "
         f"H = X_s - layerTop = {1e3*H:.3g} mm; crater depth = max over the annuli.",
         f"- Shock: axis cells (radius < {AXIS_FACTOR} x the smallest), "
-        f"{SMOOTH_CELLS}-cell running mean of rhoN (else rhoM); where it rises "
+        f"{SMOOTH_CELLS}-cell running mean of the first of {', '.join(DENSITIES)}; where it rises "
         "through the midpoint of the jet minimum and the median downstream of it; "
         f"none below a {SHOCK_RISE}x rise; standoff = X_s - x_shock.",
         "- Ejecta: parcels with x < layerTop and U_x < 0; ejection angle = "
@@ -824,7 +832,8 @@ def plot_case(analysis, output, wanted=None):
     if not shown:
         ax.text(0.5, 0.5, "no gas density written", ha="center", transform=ax.transAxes)
     ax.set_xlabel("height above the surface on the axis [mm] (dashed: shock)")
-    ax.set_ylabel("gas density (rhoN [1/m^3] or rhoM [kg/m^3])")
+    ax.set_ylabel(f"gas density ({shown[0]['shock']['field'] if shown else 'rhoN'}) "
+                  "[1/m^3 or kg/m^3]")
     ax.set_yscale("log")
     ax.grid(alpha=0.3)
     if shown:
@@ -1016,6 +1025,13 @@ def main(argv=None):
     parser.add_argument("--radial-weight", nargs=2, type=float, metavar=("W", "R"),
                         help="parcels carry the implicit radial weight 1 + (W-1) r/R")
     args = parser.parse_args(argv)
+    try:
+        report(args)
+    except (OSError, KeyError, ValueError, RuntimeError) as error:
+        sys.exit(f"psi: {error}")
+
+
+def report(args):
     options = dict(dr=args.dr, dx=args.dx, shell=args.shell, radial_weight=args.radial_weight)
     if args.compare:
         cases = args.compare + args.cases
