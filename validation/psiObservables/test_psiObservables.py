@@ -119,7 +119,8 @@ laplacianSchemes { default none; } interpolationSchemes { default linear; }
 snGradSchemes { default none; }
 """
 SOLUTION = "FoamFile { version 2.0; format ascii; class dictionary; object fvSolution; }\n"
-OBSERVABLES = f"""FoamFile {{ version 2.0; format ascii; class dictionary; object observablesDict; }}
+OBSERVABLES = f"""FoamFile {{ version 2.0; format ascii; class dictionary;
+           object observablesDict; }}
 surface {X_S};          // x of the wall patch surface [m]
 nozzleRadius {R_NOZZLE};
 layerTop {TOP};
@@ -451,7 +452,8 @@ def test_compare(case):
         text = f.read()
     assert "Times written by every case: 0, 1e-05 s" in text
     assert "Profiles and histograms at: 0, 1e-05 s" in text
-    for name in ("compare_crater.png", "compare_timeseries.png", "compare_speed.png", "compare_ejecta_speed.png",
+    for name in ("compare_crater.png", "compare_timeseries.png", "compare_speed.png",
+                 "compare_ejecta_speed.png",
                  "compare_ejection_angle.png", "compare_Tp.png", "compare_knp.png"):
         assert os.path.getsize(os.path.join(out, name)) > 0, name
     assert len(re.findall(r"^\| MPPIC \|", text, re.M)) == 2

@@ -3,6 +3,8 @@
     /usr/bin/python3 -m rmf.psi CASE [--output DIR] [--times T ...]
     /usr/bin/python3 -m rmf.psi --compare CASE1 CASE2 ... [--labels L ...]
                                 [--output DIR]
+    options: --dr M, --dx M (crater bins), --shell M (crossing shell half
+    width), --radial-weight W R (parcels weighted implicitly by radius)
 
 The first form writes PNGs and summary.md to DIR (default CASE/observables);
 the second puts the cases side by side at equal physical times (the times
@@ -37,15 +39,17 @@ Observables, each a function of this module:
    the surface has receded below the initial layer top; negative: a
    rim raised above it); the crater depth is max over the annuli of d(r).
 2. Shock standoff (shock_standoff).  Gas density (the first written of
-   rhoNMean, rhoN, rhoMMean, rhoM) in
-   the cells nearest the axis (centre radius below 1.5 times the smallest
-   one), averaged per x and smoothed by a 3-cell running mean.  Jet
-   density: the minimum of the smoothed profile upstream of the surface;
-   post-shock density: the median of the smoothed profile between that
-   minimum and the surface.  The shock is where the profile first rises
-   through their midpoint after the minimum (linear between cells); the
-   standoff is X_s - x_shock.  No shock when the post-shock density is
-   below 1.5 times the jet density.
+   rhoNMean, rhoN, rhoMMean, rhoM) in the cells nearest the axis (centre
+   radius below 1.5 times the smallest one), averaged per x and smoothed
+   by a 3-cell running mean.  Jet density: the minimum of the smoothed
+   profile upstream of the surface; post-shock density: the median of the
+   smoothed profile between that minimum and the surface.  The shock is
+   where the profile first rises through their midpoint after the minimum
+   (linear between cells); the standoff is X_s - x_shock.  No shock when
+   the post-shock density is below 1.5 times the jet density: a thick,
+   diffuse shock layer with no plateau (the density rising steadily to the
+   cold wall, as in tutorials/gas/impingingStream) is reported as none;
+   axis_density.png shows the profile and the shock found.
 3. Ejection angle (ejection_angles).  Ejecta: parcels above the initial
    layer top (x < layerTop) moving away from the surface (U_x < 0).  Angle
    above the surface: atan2(-U_x, sqrt(U_y^2 + U_z^2)), 0 along the
@@ -778,7 +782,8 @@ TIMESERIES = (
     ("shock standoff [mm]", (("shock", "standoff", 1e3, "axis"),)),
     ("max alpha", (("alpha", "max", 1, "max alpha"),)),
     ("ejection angle [deg]", (("angles", "mean", 1, "mean"), ("angles", "median", 1, "median"))),
-    ("ejecta speed [m/s]", (("speeds", "ejecta_mean", 1, "mean"), ("speeds", "ejecta_max", 1, "max"))),
+    ("ejecta speed [m/s]", (("speeds", "ejecta_mean", 1, "mean"),
+                            ("speeds", "ejecta_max", 1, "max"))),
     ("fraction toward the axis", (("crossing", "fraction_toward", 1, "flux"),
                                   ("crossing", "fraction_toward_grains", 1, "grains"))),
 )
