@@ -54,7 +54,15 @@ alpha, Kn_p), 3e-05 (gas and alpha, no parcels: the cloud is empty).
 - T_p: layer 200 K, ejecta 250 and 300 K, others 220-230 K: min 200, max
   300, real-grain mean from the group sums.
 
-About 10 s (blockMesh, postProcess, three analyses with plots).
+- Also: shocks of finite thickness before a cold-wall layer (standoff
+  within half a cell, see the test); a zero or flat axis density and an
+  empty positions file give a note, not a number; --radial-weight
+  multiplies nParticle by 1 + (W - 1) r/R; the CLI writes every PNG and a
+  summary.md whose crater depth and ejecta speed are the known ones and
+  which holds no NaN; --compare at the common times; a case without
+  observablesDict stops with a message.
+
+About 15-25 s (blockMesh, postProcess, analyses and plots of the CLI runs).
 """
 
 import math
