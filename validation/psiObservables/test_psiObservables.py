@@ -520,3 +520,15 @@ def test_thick_shock_before_a_cold_wall(width):
     print(f"thick shock {1e3*width} mm: standoff {1e3*shock['standoff']:.3f} mm, expected "
           f"{1e3*(X_S - x_sh):.3f} (tolerance 0.25 mm)")
     assert abs(shock["standoff"] - (X_S - x_sh)) < DX_CELL/2
+
+
+def test_compare_nearest_times(case):
+    """Cases written at other times (1.1e-05, 2.1e-05 against 1e-05, 2e-05):
+    each is taken at its time nearest to the first case's, and says so."""
+    other = build(os.path.join(BUILD, "shifted"), times=("1.1e-05", "2.1e-05"))
+    path, analyses = psi.compare([case, other], ["A", "B"], os.path.join(BUILD, "compareNearest"))
+    with open(path) as f:
+        text = f.read()
+    assert "each case at its time nearest to A's" in text
+    assert "Profiles and histograms at: 1e-05, 2e-05 s" in text
+    assert re.search(r"^\| B \| 21 \|", text, re.M)

@@ -905,16 +905,23 @@ def run_case(case, output=None, wanted=None, **options):
 
 
 def common_times(analyses):
-    """Times (floats) written by every case, and whether they are exact:
-    else the first case's times (each case then uses its nearest)."""
+    """Times to compare the cases at, and whether every case wrote them:
+    the times written by every case when at least two of them hold parcels
+    in every case; else the first case's times with parcels, each case
+    then taken at its own nearest time."""
     sets = [[r["t"] for r in a["rows"]] for a in analyses]
     first = sets[0]
     scale = max(max(abs(t) for t in first), 1e-30)
     common = [t for t in first
               if all(any(abs(t - u) <= 1e-9*scale for u in other) for other in sets[1:])]
-    if common:
+    if len(_with_parcels(analyses, common)) >= 2 or len(analyses) == 1:
         return common, True
-    return first, False
+    return [r["t"] for r in analyses[0]["rows"] if r.get("p") is not None] or first, False
+
+
+def _with_parcels(analyses, times):
+    return [t for t in times
+            if all((nearest_row(a, t) or {}).get("p") is not None for a in analyses)]
 
 
 def compare(cases, labels, output, **options):
@@ -924,9 +931,7 @@ def compare(cases, labels, output, **options):
     analyses = [analyse(c, **options) for c in cases]
     common, exact = common_times(analyses)
     # the common times with parcels in every case, up to HISTOGRAM_TIMES of them
-    with_parcels = [t for t in common
-                    if all((nearest_row(a, t) or {}).get("p") is not None for a in analyses)]
-    shown = with_parcels
+    shown = _with_parcels(analyses, common)
     if len(shown) > HISTOGRAM_TIMES:
         shown = [shown[i] for i in np.unique(np.round(np.linspace(
             0, len(shown) - 1, HISTOGRAM_TIMES)).astype(int))]
@@ -991,12 +996,15 @@ def compare(cases, labels, output, **options):
     lines = ["# Plume-surface interaction: comparison", ""]
     lines += [f"- {label}: {os.path.abspath(c)}" for label, c in zip(labels, cases)]
     lines += ["", ("Times written by every case: " if exact else
-                   "No time written by every case: each case at its time nearest to "
-                   f"{labels[0]}'s: ") + ", ".join(f"{t:g}" for t in common) + " s",
-              f"Profiles and histograms at: {', '.join(f'{t:g}' for t in shown) or 'none'} s",
+                   "Fewer than two times with parcels written by every case: each case "
+                   f"at its time nearest to {labels[0]}'s (its own time in the table): ")
+              + ", ".join(f"{t:g}" for t in common) + " s",
+              "Profiles and histograms at: "
+              + (", ".join(f"{t:g}" for t in shown) + " s" if shown else
+                 "none (no time with parcels in every case)"),
               ""]
     columns = (("case", None, None, 1, "{}"),) + COLUMNS
-    lines += ["## Values at the common times", "",
+    lines += ["## Values at the compared times (each case at its own t)", "",
               "| " + " | ".join(c[0] for c in columns) + " |", "|" + "---|"*len(columns)]
     for t in common:
         for a, label in zip(analyses, labels):
