@@ -700,7 +700,8 @@ def plot_crater(ax, analysis, rows, title=None):
         c = r.get("crater")
         if c is None:
             continue
-        ax.stairs(1e3*c["height"], 1e3*c["r_edges"], label=f"t = {r['time']} s")
+        ax.stairs(1e3*c["height"], 1e3*c["r_edges"], baseline=None,
+                  label=f"t = {r['time']} s")
     ax.axvline(1e3*s["nozzleRadius"], color="0.7", linestyle=":", label="nozzle radius")
     ax.set_xlabel("r [mm]")
     ax.set_ylabel("dust surface height above the wall [mm]")
@@ -789,13 +790,15 @@ TIMESERIES = (
 )
 
 
-def plot_timeseries(axes, analysis, label=None, style="-"):
+def plot_timeseries(axes, analysis, label=None, color=None):
+    """The TIMESERIES panels; a case's curves in one colour when given
+    (first curve of a panel solid, second dashed)."""
     for ax, (ylabel, curves) in zip(axes.ravel(), TIMESERIES):
-        for key, sub, scale, name in curves:
+        for (key, sub, scale, name), style in zip(curves, ("-", "--")):
             s = series(analysis, key, sub)
             if len(s):
-                ax.plot(1e6*s[:, 0], scale*s[:, 1], style, marker="o", markersize=3,
-                        label=f"{label}: {name}" if label else name)
+                ax.plot(1e6*s[:, 0], scale*s[:, 1], style, color=color, marker="o",
+                        markersize=3, label=f"{label}: {name}" if label else name)
         ax.set_xlabel("t [us]")
         ax.set_ylabel(ylabel)
         ax.grid(alpha=0.3)
@@ -950,8 +953,8 @@ def compare(cases, labels, output, **options):
     save(fig, "compare_crater.png")
 
     fig, axes = plt.subplots(2, 3, figsize=(13, 7), constrained_layout=True)
-    for a, label, style in zip(analyses, labels, ["-", "--", "-.", ":"]*4):
-        plot_timeseries(axes, a, label, style)
+    for i, (a, label) in enumerate(zip(analyses, labels)):
+        plot_timeseries(axes, a, label, f"C{i % 10}")
     save(fig, "compare_timeseries.png")
 
     for name, key, values, weights, xlabel, span, ylabel in (
