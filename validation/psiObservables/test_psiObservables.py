@@ -532,3 +532,15 @@ def test_compare_nearest_times(case):
     assert "each case at its time nearest to A's" in text
     assert "Profiles and histograms at: 1e-05, 2e-05 s" in text
     assert re.search(r"^\| B \| 21 \|", text, re.M)
+
+
+def test_axis_profile_on_a_graded_mesh():
+    """Two blocks whose first rows lie at different radii (0.3 mm for x <
+    10 mm, 1.2 mm beyond), second rows further out: every column gives its
+    first row's value (1), never a second row's (99)."""
+    x = np.repeat((np.arange(40) + 0.5)*DX_CELL, 2)
+    first = np.where(x < 0.010, 0.3e-3, 1.2e-3)
+    r = np.where(np.arange(80) % 2 == 0, first, 3*first)
+    values = np.where(np.arange(80) % 2 == 0, 1.0, 99.0)
+    xs, v = psi.axis_profile(x, r, values, cap=0.25*R_NOZZLE)
+    assert len(xs) == 40 and np.all(v == 1.0)

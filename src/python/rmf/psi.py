@@ -39,9 +39,9 @@ Observables, each a function of this module:
    the surface has receded below the initial layer top; negative: a
    rim raised above it); the crater depth is max over the annuli of d(r).
 2. Shock standoff (shock_standoff).  Gas density (the first written of
-   rhoNMean, rhoN, rhoMMean, rhoM) in the cells nearest the axis (centre
-   radius below 1.5 times the smallest one), averaged per x and smoothed
-   by a 3-cell running mean.  Jet density: the minimum of the smoothed
+   rhoNMean, rhoN, rhoMMean, rhoM) along the axis: in each column of
+   cells (equal x) the one nearest the axis, if within nozzleRadius/4;
+   smoothed by a 3-cell running mean.  Jet density: the minimum of the smoothed
    profile upstream of the surface; post-shock density: the median of the
    smoothed profile between that minimum and the surface.  The shock is
    where the profile first rises through their midpoint after the minimum
@@ -95,7 +95,7 @@ CLOUD = "grains"
 SETTINGS = ("surface", "nozzleRadius", "layerTop", "layerRadius", "crossingRadius")
 SURFACE_FRACTION = 0.5          # dust slab taken while density >= 0.5 of initial
 SHOCK_RISE = 1.5                # post-shock over jet density needed for a shock
-AXIS_FACTOR = 1.5               # axis cells: radius < 1.5 x smallest radius
+AXIS_FRACTION = 0.25            # axis cells: first row, within 0.25 nozzleRadius
 SMOOTH_CELLS = 3                # running mean along the axis
 SHELL = 0.5e-3                  # half width of the crossing shell [m]
 STAGNATION_HEIGHT = 5e-3        # stagnation region height without a shock [m]
@@ -289,14 +289,18 @@ def surface_profile(p, reference, settings, dr=None, dx=None,
                 max_depth=float(depth[i]), r_max=float(centres[i]), layer=H)
 
 
-def axis_profile(x, r, values, factor=AXIS_FACTOR):
-    """Values of the cells nearest the axis (radius < factor x smallest),
-    averaged per x: (x, values) sorted by x."""
-    near = r < factor*r.min() + 1e-12*max(abs(x).max(), 1e-30)
-    xs = np.round(x[near], 12)
+def axis_profile(x, r, values, cap):
+    """Values along the axis: in each column of cell centres (equal x to
+    1 nm) the cell(s) nearest the axis, when within cap of it (graded or
+    multi-block meshes keep their own first row): (x, values) sorted by x."""
+    xs = np.round(x, 9)
     unique, index = np.unique(xs, return_inverse=True)
+    first = np.full(len(unique), np.inf)
+    np.minimum.at(first, index, r)
+    near = (r <= first[index] + 1e-9) & (first[index] <= cap)
+    keep, index = np.unique(index[near], return_inverse=True)
     mean = np.bincount(index, weights=values[near])/np.bincount(index)
-    return unique, mean
+    return unique[keep], mean
 
 
 def _running_mean(v, cells):
@@ -484,7 +488,8 @@ def analyse(case, dr=None, dx=None, shell=SHELL, radial_weight=None):
             notes.append(f"t = {t}: no gas density ({', '.join(DENSITIES)}): shock n/a")
             row["shock"] = None
         else:
-            x, values = axis_profile(cells["x"], cells["r"], rho)
+            x, values = axis_profile(cells["x"], cells["r"], rho,
+                                     AXIS_FRACTION*settings["nozzleRadius"])
             row["axis"] = (x, values)
             row["shock"] = shock_standoff(x, values, settings["surface"])
             row["shock"]["field"] = name
@@ -647,7 +652,8 @@ def definitions(analysis):
         f"{SURFACE_FRACTION} of the initial density (included), over the initial "
         f"density (time {analysis['reference']} s); depth = H - thickness, "
         f"H = X_s - layerTop = {1e3*H:.3g} mm; crater depth = max over the annuli.",
-        f"- Shock: axis cells (radius < {AXIS_FACTOR} x the smallest), "
+        "- Shock: per x, the cell nearest the axis (within "
+        f"{AXIS_FRACTION} nozzleRadius), "
         f"{SMOOTH_CELLS}-cell running mean of the first of {', '.join(DENSITIES)}; where it rises "
         "through the midpoint of the jet minimum and the median downstream of it; "
         f"none below a {SHOCK_RISE}x rise; standoff = X_s - x_shock.",
