@@ -426,10 +426,11 @@ PNGS = ("crater_profile.png", "timeseries.png", "axis_density.png", "ejection_an
 
 
 def test_cli(case):
-    out = os.path.join(BUILD, "observables")
+    """Default output CASE/observables (test_compare uses --output)."""
+    out = os.path.join(case, "observables")
     if os.path.exists(out):
         shutil.rmtree(out)
-    run_module(case, "--output", out)
+    run_module(case, "--times", "1e-05", "2e-05")
     for name in PNGS + ("summary.md",):
         assert os.path.getsize(os.path.join(out, name)) > 0, name
     with open(os.path.join(out, "summary.md")) as f:
@@ -442,11 +443,6 @@ def test_cli(case):
     assert not re.search(r"\bnan\b", text, re.I)
     for name in PNGS:
         assert f"- {name}" in text
-
-
-def test_cli_default_output(case):
-    run_module(case, "--times", "1e-05")
-    assert os.path.exists(os.path.join(case, "observables", "summary.md"))
 
 
 def test_compare(case):
