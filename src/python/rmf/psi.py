@@ -100,6 +100,8 @@ SMOOTH_CELLS = 3                # running mean along the axis
 SHELL = 0.5e-3                  # half width of the crossing shell [m]
 STAGNATION_HEIGHT = 5e-3        # stagnation region height without a shock [m]
 HISTOGRAM_TIMES = 4             # default number of times in the histograms
+MAX_POLYGONS = 200000           # Kn_p map cell by cell up to this many cells,
+                                # interpolated between centres beyond
 # Gas density for the shock, first found: time averages before the
 # instantaneous sample (one step's simulators: noisier)
 DENSITIES = ("rhoNMean", "rhoN", "rhoMMean", "rhoM")
@@ -515,7 +517,7 @@ def analyse(case, dr=None, dx=None, shell=SHELL, radial_weight=None):
     return dict(case=case, settings=settings, cells=cells, rows=rows, notes=notes,
                 reference=reference[0] if reference else None,
                 options=dict(dr=dr, dx=dx, shell=shell, radial_weight=radial_weight),
-                polygons=meridian_cells(case))
+                polygons=meridian_cells(case) if cells["n"] <= MAX_POLYGONS else None)
 
 
 def _get(row, key, sub):
