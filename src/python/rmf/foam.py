@@ -216,11 +216,18 @@ def read_positions(path, cells=False):
     with cells=True also the cell of each parcel, (n,) integers."""
     with open(path, "rb") as f:
         text = f.read()
-    found = _POSITION.findall(text)
-    pos = np.array([p.split() for p, _ in found], float).reshape(-1, 3)
+    m = re.search(rb"\n(\d+)\s*\n\(", text)
+    table = None
+    if m:       # fast path: the list body as rows of 4 numbers
+        body = text[m.end():text.index(b"\n)", m.end())].translate(None, b"()").split()
+        if len(body) == 4*int(m.group(1)):
+            table = np.array(body, float).reshape(-1, 4)
+    if table is None:
+        found = _POSITION.findall(text)
+        table = np.array([p.split() + [c] for p, c in found], float).reshape(-1, 4)
     if cells:
-        return pos, np.array([c for _, c in found], int)
-    return pos
+        return table[:, :3], table[:, 3].astype(int)
+    return table[:, :3]
 
 
 def read_patch_field(path, patch):

@@ -3,6 +3,8 @@
     /usr/bin/python3 -m rmf.psi CASE [--output DIR] [--times T ...]
     /usr/bin/python3 -m rmf.psi --compare CASE1 CASE2 ... [--labels L ...]
                                 [--output DIR]
+    options: --dr M, --dx M (crater bins), --shell M (crossing shell half
+    width), --radial-weight W R (parcels weighted implicitly by radius)
 
 The first form writes PNGs and summary.md to DIR (default CASE/observables);
 the second puts the cases side by side at equal physical times (the times
@@ -36,15 +38,18 @@ Observables, each a function of this module:
    above the wall h(r) = thickness; crater depth d(r) = H - h(r) (how far
    the surface has receded below the initial layer top; negative: a
    rim raised above it); the crater depth is max over the annuli of d(r).
-2. Shock standoff (shock_standoff).  Number density (rhoN, else rhoM) in
-   the cells nearest the axis (centre radius below 1.5 times the smallest
-   one), averaged per x and smoothed by a 3-cell running mean.  Jet
-   density: the minimum of the smoothed profile upstream of the surface;
-   post-shock density: the median of the smoothed profile between that
-   minimum and the surface.  The shock is where the profile first rises
-   through their midpoint after the minimum (linear between cells); the
-   standoff is X_s - x_shock.  No shock when the post-shock density is
-   below 1.5 times the jet density.
+2. Shock standoff (shock_standoff).  Gas density (the first written of
+   rhoNMean, rhoN, rhoMMean, rhoM) along the axis: in each column of
+   cells (equal x) the one nearest the axis, if within nozzleRadius/4;
+   smoothed by a 3-cell running mean.  Jet density: the minimum of the smoothed
+   profile upstream of the surface; post-shock density: the median of the
+   smoothed profile between that minimum and the surface.  The shock is
+   where the profile first rises through their midpoint after the minimum
+   (linear between cells); the standoff is X_s - x_shock.  No shock when
+   the post-shock density is below 1.5 times the jet density: a thick,
+   diffuse shock layer with no plateau (the density rising steadily to the
+   cold wall, as in tutorials/gas/impingingStream) is reported as none;
+   axis_density.png shows the profile and the shock found.
 3. Ejection angle (ejection_angles).  Ejecta: parcels above the initial
    layer top (x < layerTop) moving away from the surface (U_x < 0).  Angle
    above the surface: atan2(-U_x, sqrt(U_y^2 + U_z^2)), 0 along the
@@ -79,6 +84,7 @@ import argparse
 import math
 import os
 import re
+import subprocess
 import sys
 
 import numpy as np
@@ -89,11 +95,16 @@ CLOUD = "grains"
 SETTINGS = ("surface", "nozzleRadius", "layerTop", "layerRadius", "crossingRadius")
 SURFACE_FRACTION = 0.5          # dust slab taken while density >= 0.5 of initial
 SHOCK_RISE = 1.5                # post-shock over jet density needed for a shock
-AXIS_FACTOR = 1.5               # axis cells: radius < 1.5 x smallest radius
+AXIS_FRACTION = 0.25            # axis cells: first row, within 0.25 nozzleRadius
 SMOOTH_CELLS = 3                # running mean along the axis
 SHELL = 0.5e-3                  # half width of the crossing shell [m]
 STAGNATION_HEIGHT = 5e-3        # stagnation region height without a shock [m]
 HISTOGRAM_TIMES = 4             # default number of times in the histograms
+MAX_POLYGONS = 200000           # Kn_p map cell by cell up to this many cells,
+                                # interpolated between centres beyond
+# Gas density for the shock, first found: time averages before the
+# instantaneous sample (one step's simulators: noisier)
+DENSITIES = ("rhoNMean", "rhoN", "rhoMMean", "rhoM")
 
 
 # --------------------------------------------------------------- input ----
@@ -115,9 +126,12 @@ def read_settings(case):
     return {k: float(entries[k]) for k in SETTINGS}
 
 
-def parcels(case, time, cloud=CLOUD):
+def parcels(case, time, cloud=CLOUD, radial_weight=None):
     """Parcels at time as a dict (pos, cell, U, n, and d, T when written),
-    or None when the time has no parcel of the cloud."""
+    or None when the time has no parcel of the cloud.  n: real grains per
+    parcel, nParticle; times RWF(r) = 1 + (W - 1) r/R when radial_weight =
+    (W, R) is given (parcels weighted by radius implicitly, as the gas's
+    simulators: SPEC.md 6)."""
     base = os.path.join(case, time, "lagrangian", cloud)
     if not os.path.exists(os.path.join(base, "positions")):
         return None
@@ -139,6 +153,9 @@ def parcels(case, time, cloud=CLOUD):
         if len(values) != len(pos):
             raise ValueError(f"{path}: {len(values)} values for {len(pos)} parcels")
         p[key] = values
+    if radial_weight is not None:
+        W, R = radial_weight
+        p["n"] = p["n"]*(1 + (W - 1)*radius(pos)/R)
     return p
 
 
@@ -163,10 +180,47 @@ def mesh(case):
     written = [t for t in names if os.path.exists(os.path.join(case, t, "C"))]
     try:
         C = foam.cell_centres(case, written[0] if written else names[0])
-    except FileNotFoundError as error:
-        raise SystemExit(f"psi: {case}: no cell centres and no postProcess to write "
-                         f"them (source etc/bashrc): {error}")
+    except (FileNotFoundError, subprocess.CalledProcessError) as error:
+        raise RuntimeError(f"{case}: no cell centres (a C field) and postProcess "
+                           f"could not write them (source etc/bashrc): {error}")
     return dict(C=C, x=C[:, 0], r=radius(C), n=len(C))
+
+
+def _list_body(path):
+    """Text between the brackets of an ASCII list file (faces, owner)."""
+    with open(path, "rb") as f:
+        text = f.read()
+    m = re.search(rb"\n(\d+)\s*\n\(", text)
+    if not m:
+        raise ValueError(f"{path}: no ASCII list")
+    return int(m.group(1)), text[m.end():text.rindex(b")")]
+
+
+def meridian_cells(case):
+    """Outline of every cell on the meridian plane, (x, r) polygons, from
+    the faces of the mesh's first wedge patch (one per cell), or None when
+    the mesh has no wedge patch or is not written in ASCII."""
+    mesh_dir = os.path.join(case, "constant", "polyMesh")
+    try:
+        with open(os.path.join(mesh_dir, "boundary")) as f:
+            boundary = f.read()
+        m = re.search(r"\{[^{}]*type\s+wedge;[^{}]*\}", boundary)
+        if not m:
+            return None
+        n_faces = int(re.search(r"nFaces\s+(\d+);", m.group(0)).group(1))
+        start = int(re.search(r"startFace\s+(\d+);", m.group(0)).group(1))
+        points = foam.read_list(os.path.join(mesh_dir, "points")).reshape(-1, 3)
+        _, body = _list_body(os.path.join(mesh_dir, "faces"))
+        faces = re.findall(rb"\d+\(([^)]*)\)", body)[start:start + n_faces]
+        _, body = _list_body(os.path.join(mesh_dir, "owner"))
+        owner = np.array(body.split(), int)[start:start + n_faces]
+    except (OSError, ValueError, AttributeError, IndexError):
+        return None
+    polygons = [None]*(owner.max() + 1 if len(owner) else 0)
+    for cell, face in zip(owner, faces):
+        pts = points[np.array(face.split(), int)]
+        polygons[cell] = np.stack([pts[:, 0], np.hypot(pts[:, 1], pts[:, 2])], -1)
+    return polygons
 
 
 def field(case, time, name, ncells):
@@ -237,14 +291,18 @@ def surface_profile(p, reference, settings, dr=None, dx=None,
                 max_depth=float(depth[i]), r_max=float(centres[i]), layer=H)
 
 
-def axis_profile(x, r, values, factor=AXIS_FACTOR):
-    """Values of the cells nearest the axis (radius < factor x smallest),
-    averaged per x: (x, values) sorted by x."""
-    near = r < factor*r.min() + 1e-12*max(abs(x).max(), 1e-30)
-    xs = np.round(x[near], 12)
+def axis_profile(x, r, values, cap):
+    """Values along the axis: in each column of cell centres (equal x to
+    1 nm) the cell(s) nearest the axis, when within cap of it (graded or
+    multi-block meshes keep their own first row): (x, values) sorted by x."""
+    xs = np.round(x, 9)
     unique, index = np.unique(xs, return_inverse=True)
+    first = np.full(len(unique), np.inf)
+    np.minimum.at(first, index, r)
+    near = (r <= first[index] + 1e-9) & (first[index] <= cap)
+    keep, index = np.unique(index[near], return_inverse=True)
     mean = np.bincount(index, weights=values[near])/np.bincount(index)
-    return unique, mean
+    return unique[keep], mean
 
 
 def _running_mean(v, cells):
@@ -269,9 +327,10 @@ def shock_standoff(x, rho, surface, smooth=SMOOTH_CELLS, rise=SHOCK_RISE):
     if i >= len(s) - 2:
         return dict(standoff=None, note="density falls all the way to the surface")
     post = float(np.median(s[i + 1:]))
-    if post < rise*jet:
+    if not (post > 0 and post >= rise*jet):
         return dict(standoff=None,
-                    note=f"post-shock density {post:.3g} below {rise} x jet {jet:.3g}")
+                    note=f"no rise to {rise} x the jet density after its minimum "
+                         f"(jet {jet:.3g}, downstream median {post:.3g})")
     mid = 0.5*(jet + post)
     k = i + 1 + int(np.nonzero(s[i + 1:] >= mid)[0][0])
     x_shock = x[k - 1] + (mid - s[k - 1])*(x[k] - x[k - 1])/(s[k] - s[k - 1])
@@ -311,6 +370,7 @@ def speeds(p, settings):
     sel = ejecta(p, settings)
     out = dict(speed=speed, weight=p["n"], mean=float(np.average(speed, weights=p["n"])),
                max=float(speed.max()), ejecta=int(sel.sum()),
+               ejecta_speed=speed[sel], ejecta_weight=p["n"][sel],
                ejecta_mean=None, ejecta_max=None)
     if sel.any():
         out["ejecta_mean"] = float(np.average(speed[sel], weights=p["n"][sel]))
@@ -393,7 +453,7 @@ def temperatures(p):
 
 # ----------------------------------------------------------- analysis ----
 
-def analyse(case, dr=None, dx=None, shell=SHELL):
+def analyse(case, dr=None, dx=None, shell=SHELL, radial_weight=None):
     """Every observable at every written time: dict(case, settings, cells,
     times [rows], notes, reference time)."""
     settings = read_settings(case)
@@ -401,7 +461,7 @@ def analyse(case, dr=None, dx=None, shell=SHELL):
     rows, notes, reference = [], [], None
     for t in foam.times(case):
         row = dict(time=t, t=float(t))
-        p = parcels(case, t)
+        p = parcels(case, t, radial_weight=radial_weight)
         row["p"] = p
         if p is None:
             notes.append(f"t = {t}: no {CLOUD} parcels written: grain observables n/a")
@@ -421,16 +481,20 @@ def analyse(case, dr=None, dx=None, shell=SHELL):
             row["T"] = temperatures(p)
             if row["T"] is None:
                 notes.append(f"t = {t}: no parcel temperature T written")
-        rho = field(case, t, "rhoN", cells["n"])
+        rho, name = None, None
+        for name in DENSITIES:
+            rho = field(case, t, name, cells["n"])
+            if rho is not None:
+                break
         if rho is None:
-            rho = field(case, t, "rhoM", cells["n"])
-        if rho is None:
-            notes.append(f"t = {t}: no gas density (rhoN, rhoM): shock n/a")
+            notes.append(f"t = {t}: no gas density ({', '.join(DENSITIES)}): shock n/a")
             row["shock"] = None
         else:
-            x, values = axis_profile(cells["x"], cells["r"], rho)
+            x, values = axis_profile(cells["x"], cells["r"], rho,
+                                     AXIS_FRACTION*settings["nozzleRadius"])
             row["axis"] = (x, values)
             row["shock"] = shock_standoff(x, values, settings["surface"])
+            row["shock"]["field"] = name
             if row["shock"]["standoff"] is None:
                 notes.append(f"t = {t}: no shock on the axis ({row['shock']['note']})")
         row["alpha"] = max_alpha(field(case, t, "alpha." + CLOUD, cells["n"]))
@@ -451,7 +515,9 @@ def analyse(case, dr=None, dx=None, shell=SHELL):
     if reference is None:
         notes.append(f"no {CLOUD} parcels at any time: grain observables n/a")
     return dict(case=case, settings=settings, cells=cells, rows=rows, notes=notes,
-                reference=reference[0] if reference else None)
+                reference=reference[0] if reference else None,
+                options=dict(dr=dr, dx=dx, shell=shell, radial_weight=radial_weight),
+                polygons=meridian_cells(case) if cells["n"] <= MAX_POLYGONS else None)
 
 
 def _get(row, key, sub):
@@ -483,9 +549,10 @@ def value(row, key, sub):
     """One number of a row (None when not available)."""
     if key is None:
         return row["t"]
-    if sub is None:
-        return row.get(key)
-    return _get(row, key, sub)
+    v = row.get(key) if sub is None else _get(row, key, sub)
+    if isinstance(v, float) and not math.isfinite(v):
+        return None         # never reported as a number (see the notes)
+    return v
 
 
 def series(analysis, key, sub):
@@ -570,19 +637,37 @@ def key_numbers(analysis):
     return out
 
 
-def definitions(settings):
+def definitions(analysis):
+    """Definitions of the observables with this run's bins and options."""
+    s, o = analysis["settings"], analysis["options"]
+    r_edges, dx, _, H = _bins(s, o["dr"], o["dx"])
+    weight = "nParticle"
+    if o["radial_weight"]:
+        W, R = o["radial_weight"]
+        weight = f"nParticle x (1 + ({W:g} - 1) r/{R:g} m)"
     return [
-        "Definitions (rmf/psi.py docstring): crater depth = initial layer height "
-        "H = X_s - layerTop minus the dust thickness above the wall in an annulus "
-        "(real grains of the slabs from the wall up to the first slab below 0.5 of "
-        "the initial density, over the initial density); shock = midpoint rise of "
-        "the axis density between the jet minimum and the post-shock median "
-        "(3-cell running mean), standoff = X_s - x_shock; ejecta = parcels with "
-        "x < layerTop and U_x < 0, angle = atan2(-U_x, |U_yz|), mass-weighted; "
-        f"crossing = real grains within {SHELL*1e3:g} mm of r = "
-        f"{settings['crossingRadius']*1e3:g} mm, flux-weighted sum(w|v_r|) by sign "
-        "of v_r; Kn_p stagnation region = r <= nozzleRadius, between shock and "
-        "surface; every statistic weighted by nParticle.",
+        f"- Real grains of a parcel: {weight}; every statistic is weighted by them "
+        "(ejection angle: by mass, real grains x d^3).",
+        f"- Crater: annuli of {1e3*(r_edges[1] - r_edges[0]):.3g} mm to r = "
+        f"{1e3*r_edges[-1]:.3g} mm, slabs of {1e3*dx:.3g} mm from the wall up; dust "
+        f"thickness = real grains of the slabs up to the first one below "
+        f"{SURFACE_FRACTION} of the initial density (included), over the initial "
+        f"density (time {analysis['reference']} s); depth = H - thickness, "
+        f"H = X_s - layerTop = {1e3*H:.3g} mm; crater depth = max over the annuli.",
+        "- Shock: per x, the cell nearest the axis (within "
+        f"{AXIS_FRACTION} nozzleRadius), "
+        f"{SMOOTH_CELLS}-cell running mean of the first of {', '.join(DENSITIES)}; where it rises "
+        "through the midpoint of the jet minimum and the median downstream of it; "
+        f"none below a {SHOCK_RISE}x rise; standoff = X_s - x_shock.",
+        "- Ejecta: parcels with x < layerTop and U_x < 0; ejection angle = "
+        "atan2(-U_x, sqrt(U_y^2 + U_z^2)) above the surface.",
+        f"- Crossing: real grains within {1e3*o['shell']:g} mm of r = "
+        f"{1e3*s['crossingRadius']:g} mm; toward the axis (flux) = sum(w |v_r|) over "
+        "v_r < 0 / sum(w |v_r|) (fraction of the crossings per unit time); "
+        "(grains) = real grains with v_r < 0 over those with v_r != 0.",
+        "- Kn_p: Knp.grains (else lambda.gas / real-grain mean d in the cell); "
+        f"stagnation region: r <= nozzleRadius, height <= shock standoff "
+        f"({1e3*STAGNATION_HEIGHT:g} mm without a shock).",
     ]
 
 
@@ -623,7 +708,8 @@ def plot_crater(ax, analysis, rows, title=None):
         c = r.get("crater")
         if c is None:
             continue
-        ax.step(1e3*c["r"], 1e3*c["height"], where="mid", label=f"t = {r['time']} s")
+        ax.stairs(1e3*c["height"], 1e3*c["r_edges"], baseline=None,
+                  label=f"t = {r['time']} s")
     ax.axvline(1e3*s["nozzleRadius"], color="0.7", linestyle=":", label="nozzle radius")
     ax.set_xlabel("r [mm]")
     ax.set_ylabel("dust surface height above the wall [mm]")
@@ -636,9 +722,11 @@ def plot_crater(ax, analysis, rows, title=None):
 
 def plot_histogram(ax, rows, key, values, weights, xlabel, bins=40, span=None):
     """Real-grain (or mass) fraction per bin, one step line per row."""
-    data = [(r, r.get(key)) for r in rows if r.get(key) is not None]
+    data = [(r, r[key]) for r in rows if r.get(key) is not None
+            and r[key].get(values) is not None and len(r[key][values])]
     if not data:
-        ax.text(0.5, 0.5, f"no {key} data", ha="center", transform=ax.transAxes)
+        ax.text(0.5, 0.5, f"no {values} data at these times", ha="center",
+                transform=ax.transAxes)
         return
     if span is None:
         lo = min(d[values].min() for _, d in data)
@@ -647,13 +735,15 @@ def plot_histogram(ax, rows, key, values, weights, xlabel, bins=40, span=None):
     edges = np.linspace(span[0], span[1], bins + 1)
     for r, d in data:
         h, _ = np.histogram(d[values], edges, weights=d[weights])
-        ax.step(edges[:-1], h/h.sum(), where="post", label=f"t = {r['time']} s")
+        ax.stairs(h/max(h.sum(), 1e-300), edges, label=f"t = {r['time']} s")
     ax.set_xlabel(xlabel)
     ax.grid(alpha=0.3)
     ax.legend(fontsize=7)
 
 
-def plot_knp(ax, fig, analysis, row, title=None):
+def plot_knp(ax, fig, analysis, row, title=None, span=None):
+    """Kn_p map on the (r, height) plane, log colours (over span when
+    given: one scale for the cases of a comparison)."""
     from matplotlib import colors, tri as mtri
     knp = row.get("knp") if row else None
     if knp is None or not (knp > 0).any():
@@ -661,20 +751,39 @@ def plot_knp(ax, fig, analysis, row, title=None):
                 transform=ax.transAxes)
         return
     s, cells = analysis["settings"], analysis["cells"]
-    height = 1e3*(s["surface"] - cells["x"])
-    r = 1e3*cells["r"]
-    triangles = mtri.Triangulation(r, height)
-    bad = ~(knp > 0)
-    triangles.set_mask(bad[triangles.triangles].any(axis=1))
     positive = knp[knp > 0]
-    norm = colors.LogNorm(vmin=positive.min(), vmax=max(positive.max(), positive.min()*1.01))
-    art = ax.tripcolor(triangles, np.where(bad, positive.min(), knp), norm=norm,
-                       shading="gouraud", cmap="viridis")
+    lo, hi = span or (positive.min(), positive.max())
+    norm = colors.LogNorm(vmin=lo, vmax=max(hi, lo*1.01))
+    polygons = analysis.get("polygons")
+    if polygons is not None and len(polygons) == len(knp):
+        from matplotlib.collections import PolyCollection
+        show = np.nonzero(knp > 0)[0]
+        art = PolyCollection([np.stack([1e3*polygons[i][:, 1],
+                                        1e3*(s["surface"] - polygons[i][:, 0])], -1)
+                              for i in show], array=knp[show], norm=norm, cmap="viridis",
+                             edgecolors="face", linewidths=0.2)
+        ax.add_collection(art)
+        outline = np.concatenate(polygons)
+        ax.set_xlim(0, 1e3*outline[:, 1].max())
+        ax.set_ylim(1e3*(s["surface"] - outline[:, 0].max()),
+                    1e3*(s["surface"] - outline[:, 0].min()))
+    else:           # no wedge outline: interpolated between cell centres
+        height = 1e3*(s["surface"] - cells["x"])
+        triangles = mtri.Triangulation(1e3*cells["r"], height)
+        bad = ~(knp > 0)
+        triangles.set_mask(bad[triangles.triangles].any(axis=1))
+        art = ax.tripcolor(triangles, np.where(bad, positive.min(), knp), norm=norm,
+                           shading="gouraud", cmap="viridis")
+    ax.axvline(1e3*s["nozzleRadius"], color="0.6", linestyle=":", linewidth=0.8)
+    shock = row.get("shock")
+    if shock and shock.get("standoff") is not None:
+        ax.axhline(1e3*shock["standoff"], color="0.4", linestyle="--", linewidth=0.8)
     fig.colorbar(art, ax=ax, label=r"Kn$_p$ = $\lambda$/d$_p$")
     ax.set_xlabel("r [mm]")
     ax.set_ylabel("height above the surface [mm]")
     ax.set_aspect("equal")
-    ax.set_title(title or f"Kn_p, t = {row['time']} s ({row['knp_source']})", fontsize=9)
+    ax.set_title(title or f"Kn_p, t = {row['time']} s ({row['knp_source']})\n"
+                 "dashed: shock; dotted: nozzle radius", fontsize=9)
 
 
 TIMESERIES = (
@@ -682,19 +791,22 @@ TIMESERIES = (
     ("shock standoff [mm]", (("shock", "standoff", 1e3, "axis"),)),
     ("max alpha", (("alpha", "max", 1, "max alpha"),)),
     ("ejection angle [deg]", (("angles", "mean", 1, "mean"), ("angles", "median", 1, "median"))),
-    ("ejecta speed [m/s]", (("speeds", "ejecta_mean", 1, "mean"), ("speeds", "ejecta_max", 1, "max"))),
+    ("ejecta speed [m/s]", (("speeds", "ejecta_mean", 1, "mean"),
+                            ("speeds", "ejecta_max", 1, "max"))),
     ("fraction toward the axis", (("crossing", "fraction_toward", 1, "flux"),
                                   ("crossing", "fraction_toward_grains", 1, "grains"))),
 )
 
 
-def plot_timeseries(axes, analysis, label=None, style="-"):
+def plot_timeseries(axes, analysis, label=None, color=None):
+    """The TIMESERIES panels; a case's curves in one colour when given
+    (first curve of a panel solid, second dashed)."""
     for ax, (ylabel, curves) in zip(axes.ravel(), TIMESERIES):
-        for key, sub, scale, name in curves:
+        for (key, sub, scale, name), style in zip(curves, ("-", "--")):
             s = series(analysis, key, sub)
             if len(s):
-                ax.plot(1e6*s[:, 0], scale*s[:, 1], style, marker="o", markersize=3,
-                        label=f"{label}: {name}" if label else name)
+                ax.plot(1e6*s[:, 0], scale*s[:, 1], style, color=color, marker="o",
+                        markersize=3, label=f"{label}: {name}" if label else name)
         ax.set_xlabel("t [us]")
         ax.set_ylabel(ylabel)
         ax.grid(alpha=0.3)
@@ -736,7 +848,8 @@ def plot_case(analysis, output, wanted=None):
     if not shown:
         ax.text(0.5, 0.5, "no gas density written", ha="center", transform=ax.transAxes)
     ax.set_xlabel("height above the surface on the axis [mm] (dashed: shock)")
-    ax.set_ylabel("gas density (rhoN [1/m^3] or rhoM [kg/m^3])")
+    ax.set_ylabel(f"gas density ({shown[0]['shock']['field'] if shown else 'rhoN'}) "
+                  "[1/m^3 or kg/m^3]")
     ax.set_yscale("log")
     ax.grid(alpha=0.3)
     if shown:
@@ -749,10 +862,15 @@ def plot_case(analysis, output, wanted=None):
     ax.set_ylabel("mass fraction of the ejecta")
     save(fig, "ejection_angle.png")
 
-    fig, ax = plt.subplots(figsize=(7, 4.5), constrained_layout=True)
+    fig, (ax, ax_e) = plt.subplots(1, 2, figsize=(12, 4.5), constrained_layout=True)
     plot_histogram(ax, rows, "speeds", "speed", "weight", "grain speed |U| [m/s]")
     ax.set_ylabel("fraction of the real grains")
     ax.set_yscale("log")
+    ax.set_title("all grains")
+    plot_histogram(ax_e, rows, "speeds", "ejecta_speed", "ejecta_weight",
+                   "ejecta speed |U| [m/s]")
+    ax_e.set_ylabel("fraction of the ejecta's real grains")
+    ax_e.set_title("ejecta (x < layerTop, U_x < 0)")
     save(fig, "speed_histogram.png")
 
     fig, ax = plt.subplots(figsize=(7, 4.5), constrained_layout=True)
@@ -781,7 +899,7 @@ def write_summary(analysis, output, pngs):
     lines += key_numbers(analysis)
     lines += ["", "## Values against time", ""]
     lines += table(analysis["rows"])
-    lines += ["", "## Definitions", ""] + definitions(s)
+    lines += ["", "## Definitions", ""] + definitions(analysis)
     lines += ["", "## Notes", ""] + ([f"- {n}" for n in analysis["notes"]] or ["- none"])
     lines += ["", "## Figures", ""] + [f"- {p}" for p in pngs]
     path = os.path.join(output, "summary.md")
@@ -790,36 +908,41 @@ def write_summary(analysis, output, pngs):
     return path
 
 
-def run_case(case, output=None, wanted=None, dr=None, dx=None):
+def run_case(case, output=None, wanted=None, **options):
     output = output or os.path.join(case, "observables")
-    analysis = analyse(case, dr, dx)
+    analysis = analyse(case, **options)
     pngs = plot_case(analysis, output, wanted)
     return write_summary(analysis, output, pngs), analysis
 
 
 def common_times(analyses):
-    """Times (floats) written by every case, and whether they are exact:
-    else the first case's times (each case then uses its nearest)."""
+    """Times to compare the cases at, and whether every case wrote them:
+    the times written by every case when at least two of them hold parcels
+    in every case; else the first case's times with parcels, each case
+    then taken at its own nearest time."""
     sets = [[r["t"] for r in a["rows"]] for a in analyses]
     first = sets[0]
     scale = max(max(abs(t) for t in first), 1e-30)
     common = [t for t in first
               if all(any(abs(t - u) <= 1e-9*scale for u in other) for other in sets[1:])]
-    if common:
+    if len(_with_parcels(analyses, common)) >= 2 or len(analyses) == 1:
         return common, True
-    return first, False
+    return [r["t"] for r in analyses[0]["rows"] if r.get("p") is not None] or first, False
 
 
-def compare(cases, labels, output, dr=None, dx=None):
+def _with_parcels(analyses, times):
+    return [t for t in times
+            if all((nearest_row(a, t) or {}).get("p") is not None for a in analyses)]
+
+
+def compare(cases, labels, output, **options):
     """Side-by-side plots and summary of several cases at equal times."""
     plt = _plt()
     os.makedirs(output, exist_ok=True)
-    analyses = [analyse(c, dr, dx) for c in cases]
+    analyses = [analyse(c, **options) for c in cases]
     common, exact = common_times(analyses)
     # the common times with parcels in every case, up to HISTOGRAM_TIMES of them
-    with_parcels = [t for t in common
-                    if all((nearest_row(a, t) or {}).get("p") is not None for a in analyses)]
-    shown = with_parcels
+    shown = _with_parcels(analyses, common)
     if len(shown) > HISTOGRAM_TIMES:
         shown = [shown[i] for i in np.unique(np.round(np.linspace(
             0, len(shown) - 1, HISTOGRAM_TIMES)).astype(int))]
@@ -838,20 +961,24 @@ def compare(cases, labels, output, dr=None, dx=None):
     save(fig, "compare_crater.png")
 
     fig, axes = plt.subplots(2, 3, figsize=(13, 7), constrained_layout=True)
-    for a, label, style in zip(analyses, labels, ["-", "--", "-.", ":"]*4):
-        plot_timeseries(axes, a, label, style)
+    for i, (a, label) in enumerate(zip(analyses, labels)):
+        plot_timeseries(axes, a, label, f"C{i % 10}")
     save(fig, "compare_timeseries.png")
 
     for name, key, values, weights, xlabel, span, ylabel in (
             ("compare_speed.png", "speeds", "speed", "weight", "grain speed |U| [m/s]",
              None, "fraction of the real grains"),
+            ("compare_ejecta_speed.png", "speeds", "ejecta_speed", "ejecta_weight",
+             "ejecta speed |U| [m/s]", None, "fraction of the ejecta's real grains"),
             ("compare_ejection_angle.png", "angles", "angle", "weight",
              "ejection angle above the surface [deg]", (0, 90), "mass fraction of the ejecta"),
             ("compare_Tp.png", "T", "T", "weight", "grain temperature T_p [K]", None,
              "fraction of the real grains")):
         rows = [[nearest_row(a, t) for t in shown] for a in analyses]
         if span is None:
-            data = [r[key][values] for rr in rows for r in rr if r and r.get(key)]
+            data = [r[key][values] for rr in rows for r in rr
+                    if r and r.get(key) and r[key].get(values) is not None
+                    and len(r[key][values])]
             span = (min(d.min() for d in data), max(d.max() for d in data)) if data else None
             if span and span[1] <= span[0]:
                 span = (span[0], span[0] + 1)
@@ -861,26 +988,34 @@ def compare(cases, labels, output, dr=None, dx=None):
             plot_histogram(ax, rr, key, values, weights, xlabel,
                            bins=18 if key == "angles" else 40, span=span)
             ax.set_title(label)
+            if values == "speed":
+                ax.set_yscale("log")     # the resting layer dwarfs the ejecta
         axes[0, 0].set_ylabel(ylabel)
         save(fig, name)
 
     t_knp = shown[-1] if shown else (common[-1] if common else None)
     fig, axes = plt.subplots(1, ncol, figsize=(5*ncol, 4.5), squeeze=False,
                              constrained_layout=True)
-    for ax, a, label in zip(axes[0], analyses, labels):
-        row = nearest_row(a, t_knp) if t_knp is not None else None
-        plot_knp(ax, fig, a, row, f"{label}: Kn_p, t = {row['time'] if row else 'n/a'} s")
+    knp_rows = [nearest_row(a, t_knp) if t_knp is not None else None for a in analyses]
+    positive = [r["knp"][r["knp"] > 0] for r in knp_rows
+                if r and r.get("knp") is not None and (r["knp"] > 0).any()]
+    span = (min(k.min() for k in positive), max(k.max() for k in positive)) if positive else None
+    for ax, a, row, label in zip(axes[0], analyses, knp_rows, labels):
+        plot_knp(ax, fig, a, row, f"{label}: Kn_p, t = {row['time'] if row else 'n/a'} s", span)
     save(fig, "compare_knp.png")
 
     lines = ["# Plume-surface interaction: comparison", ""]
     lines += [f"- {label}: {os.path.abspath(c)}" for label, c in zip(labels, cases)]
     lines += ["", ("Times written by every case: " if exact else
-                   "No time written by every case: each case at its time nearest to "
-                   f"{labels[0]}'s: ") + ", ".join(f"{t:g}" for t in common) + " s",
-              f"Profiles and histograms at: {', '.join(f'{t:g}' for t in shown) or 'none'} s",
+                   "Fewer than two times with parcels written by every case: each case "
+                   f"at its time nearest to {labels[0]}'s (its own time in the table): ")
+              + ", ".join(f"{t:g}" for t in common) + " s",
+              "Profiles and histograms at: "
+              + (", ".join(f"{t:g}" for t in shown) + " s" if shown else
+                 "none (no time with parcels in every case)"),
               ""]
     columns = (("case", None, None, 1, "{}"),) + COLUMNS
-    lines += ["## Values at the common times", "",
+    lines += ["## Values at the compared times (each case at its own t)", "",
               "| " + " | ".join(c[0] for c in columns) + " |", "|" + "---|"*len(columns)]
     for t in common:
         for a, label in zip(analyses, labels):
@@ -891,7 +1026,7 @@ def compare(cases, labels, output, dr=None, dx=None):
         lines += ["", f"## Key numbers: {label}", ""] + key_numbers(a)
         if a["notes"]:
             lines += ["", f"Notes ({label}):"] + [f"- {n}" for n in a["notes"]]
-    lines += ["", "## Definitions", ""] + definitions(analyses[0]["settings"])
+    lines += ["", "## Definitions", ""] + definitions(analyses[0])
     lines += ["", "## Figures", ""] + [f"- {p}" for p in pngs]
     path = os.path.join(output, "summary.md")
     with open(path, "w") as f:
@@ -909,17 +1044,29 @@ def main(argv=None):
     parser.add_argument("--times", nargs="+", help="times of the profiles and histograms")
     parser.add_argument("--dr", type=float, help="annulus width of the crater [m]")
     parser.add_argument("--dx", type=float, help="slab height of the crater [m]")
+    parser.add_argument("--shell", type=float, default=SHELL,
+                        help="half width of the crossing shell [m]")
+    parser.add_argument("--radial-weight", nargs=2, type=float, metavar=("W", "R"),
+                        help="parcels carry the implicit radial weight 1 + (W-1) r/R")
     args = parser.parse_args(argv)
+    try:
+        report(args)
+    except (OSError, KeyError, ValueError, RuntimeError) as error:
+        sys.exit(f"psi: {error}")
+
+
+def report(args):
+    options = dict(dr=args.dr, dx=args.dx, shell=args.shell, radial_weight=args.radial_weight)
     if args.compare:
         cases = args.compare + args.cases
         labels = args.labels or [os.path.basename(os.path.abspath(c)) for c in cases]
         if len(labels) != len(cases):
             sys.exit(f"psi: {len(cases)} cases but {len(labels)} labels")
-        path, _ = compare(cases, labels, args.output or "psiCompare", args.dr, args.dx)
+        path, _ = compare(cases, labels, args.output or "psiCompare", **options)
     else:
         if len(args.cases) != 1:
             sys.exit("psi: one CASE (or --compare CASE ...)")
-        path, analysis = run_case(args.cases[0], args.output, args.times, args.dr, args.dx)
+        path, analysis = run_case(args.cases[0], args.output, args.times, **options)
         for n in analysis["notes"]:
             print(f"psi: note: {n}")
     print(f"psi: wrote {path}")
