@@ -40,7 +40,7 @@ def main(argv=None):
     times = [t for t in foam.times(case) if float(t) > 0]
     if not times:
         sys.exit(f"scene: {case}: no written time after 0")
-    pick = sorted({times[0], times[len(times)//2], times[-1]})[:args.times]
+    pick = sorted({times[0], times[len(times)//2], times[-1]}, key=float)[:args.times]
 
     fig, axes = plt.subplots(1, len(pick), figsize=(5.2*len(pick), 4.4),
                              squeeze=False, constrained_layout=True)
