@@ -154,7 +154,8 @@ Foam::gasCloudInputCheck::gasCloudInputCheck
     axisymmetric_
     (
         checked(inputChecks::readCloudProperties(cloudName, mesh)),
-        mesh
+        mesh,
+        "gas"
     )
 {}
 
@@ -173,7 +174,8 @@ Foam::gasCloudInputCheck::gasCloudInputCheck
             inputChecks::readCloudProperties(cloudName, mesh),
             initialiseDict
         ),
-        mesh
+        mesh,
+        "gas"
     )
 {}
 

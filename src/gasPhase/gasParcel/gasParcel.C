@@ -62,18 +62,4 @@ bool Foam::gasParcel::trackingData::weighMove
 }
 
 
-void Foam::gasParcel::rotateVelocityTo(const point& q)
-{
-    const scalar r = axisymmetricGas::radius(q);
-
-    if (r > VSMALL)
-    {
-        const scalar c = q.y()/r;
-        const scalar s = q.z()/r;
-
-        U_ = vector(U_.x(), c*U_.y() + s*U_.z(), c*U_.z() - s*U_.y());
-    }
-}
-
-
 // ************************************************************************* //

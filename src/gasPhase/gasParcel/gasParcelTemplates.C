@@ -71,18 +71,12 @@ bool Foam::gasParcel::moveAxisymmetric
         const point here = this->position();
         const point start(here.x(), here.y(), 0);
         const vector path = f*trackTime*U_;
-        const point end = start + path;
-        const vector chord
-        (
-            path.x(),
-            axisymmetricGas::radius(end) - here.y(),
-            -here.z()
-        );
+        const vector chord(axisymmetricMode::chord(here, path));
 
         this->trackToFace(chord, f);
 
         const scalar done = (this->stepFraction() - (1 - f))/f;
-        rotateVelocityTo(start + done*path);
+        axisymmetricMode::turn(U_, start + done*path);
 
         this->hitFace(chord, cloud, td);
     }
