@@ -25,7 +25,8 @@ Foam::gasParcel::trackingData::trackingData(DSMCCloud<gasParcel>& cloud)
     axisymmetric_
     (
         owner_.axisymmetric().active() ? &owner_.axisymmetric() : nullptr
-    )
+    ),
+    randomEntry_(owner_.randomEntryTime())
 {}
 
 
