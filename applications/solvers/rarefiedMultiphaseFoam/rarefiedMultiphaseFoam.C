@@ -20,7 +20,7 @@ Description
 
       1. gas inflow               gasCloud::evolve (InflowBoundaryModel)
       2. gas move                 gasCloud::evolve; in the axisymmetric
-                                  mode (axisymmetricGas) gasParcel moves
+                                  mode (axisymmetricMode) gasParcel moves
                                   each simulator in 3-D, rotates it back
                                   into the meridional plane, and
                                   gasCloud::weighMove deletes or clones it

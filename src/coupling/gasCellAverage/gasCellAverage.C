@@ -65,6 +65,8 @@ void Foam::gasCellAverage::sample(const gasCloud& gas)
     const scalar keep = 1 - w;
 
     const auto& occupancy = gas.cellOccupancy();
+    const axisymmetricMode& axisymmetric = gas.axisymmetric();
+    const bool weighted = axisymmetric.weighted();
 
     forAll(occupancy, celli)
     {
@@ -77,9 +79,12 @@ void Foam::gasCellAverage::sample(const gasCloud& gas)
         }
         for (const gasParcel* p : occupancy[celli])
         {
+            // Radial weight factor: simulators per nParticle molecules
+            const scalar f =
+                weighted ? axisymmetric.weightAt(p->position()) : 1;
             const label typei = p->typeId();
-            const scalar mi = m_[typei];
-            count_[typei][celli] += w;
+            const scalar mi = f*m_[typei];
+            count_[typei][celli] += w*f;
             M += mi;
             P += mi*p->U();
             E += mi*magSqr(p->U());

@@ -28,6 +28,7 @@ Foam::wordList Foam::gasCloudInputCheck::checkProperties
 
     getPositive(dict, "nEquivalentParticles");
     getLabelOrDefault(dict, "randomSeed", 0, 0, 2000);
+    dict.getOrDefault<bool>("randomEntryTime", false);
 
     const wordList species(dict.get<wordList>("typeIdList"));
     if (species.empty())
@@ -154,7 +155,8 @@ Foam::gasCloudInputCheck::gasCloudInputCheck
     axisymmetric_
     (
         checked(inputChecks::readCloudProperties(cloudName, mesh)),
-        mesh
+        mesh,
+        "gas"
     )
 {}
 
@@ -173,7 +175,8 @@ Foam::gasCloudInputCheck::gasCloudInputCheck
             inputChecks::readCloudProperties(cloudName, mesh),
             initialiseDict
         ),
-        mesh
+        mesh,
+        "gas"
     )
 {}
 
@@ -384,7 +387,15 @@ Foam::gasCloud::gasCloud(const word& cloudName, const fvMesh& mesh)
 :
     gasCloudInputCheck(cloudName, mesh),
     DSMCCloud<gasParcel>(cloudName, mesh, true),
-    account_("Simulators", mesh.boundaryMesh(), this->size())
+    account_("Simulators", mesh.boundaryMesh(), this->size()),
+    randomEntryTime_
+    (
+        particleProperties().getOrDefault<bool>
+        (
+            "randomEntryTime",
+            axisymmetric_.active()
+        )
+    )
 {
     seedFromCase();
     setWeighting();
@@ -400,7 +411,8 @@ Foam::gasCloud::gasCloud
 :
     gasCloudInputCheck(cloudName, mesh, initialiseDict),
     DSMCCloud<gasParcel>(cloudName, mesh, emptied(initialiseDict)),
-    account_("Simulators", mesh.boundaryMesh(), 0)
+    account_("Simulators", mesh.boundaryMesh(), 0),
+    randomEntryTime_(false)     // the fill moves nothing
 {
     setWeighting();
     fill(initialiseDict);

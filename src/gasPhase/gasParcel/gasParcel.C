@@ -25,7 +25,8 @@ Foam::gasParcel::trackingData::trackingData(DSMCCloud<gasParcel>& cloud)
     axisymmetric_
     (
         owner_.axisymmetric().active() ? &owner_.axisymmetric() : nullptr
-    )
+    ),
+    randomEntry_(owner_.randomEntryTime())
 {}
 
 
@@ -59,20 +60,6 @@ bool Foam::gasParcel::trackingData::weighMove
 )
 {
     return owner_.weighMove(p, w0, complete);
-}
-
-
-void Foam::gasParcel::rotateVelocityTo(const point& q)
-{
-    const scalar r = axisymmetricGas::radius(q);
-
-    if (r > VSMALL)
-    {
-        const scalar c = q.y()/r;
-        const scalar s = q.z()/r;
-
-        U_ = vector(U_.x(), c*U_.y() + s*U_.z(), c*U_.z() - s*U_.y());
-    }
 }
 
 

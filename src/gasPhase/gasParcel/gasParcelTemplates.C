@@ -8,6 +8,21 @@
 // * * * * * * * * * * * * * * * * Tracking  * * * * * * * * * * * * * * * * //
 
 template<class TrackCloudType>
+void Foam::gasParcel::enter(TrackCloudType& cloud, const trackingData& td)
+{
+    if (entered_)
+    {
+        if (td.randomEntry())
+        {
+            this->stepFraction() =
+                cloud.rndGen().template sample01<scalar>();
+        }
+        entered_ = false;
+    }
+}
+
+
+template<class TrackCloudType>
 bool Foam::gasParcel::move
 (
     TrackCloudType& cloud,
@@ -19,6 +34,8 @@ bool Foam::gasParcel::move
     {
         return moveAxisymmetric(cloud, td, trackTime);
     }
+
+    enter(cloud, td);
 
     // Upstream's ballistic move (reduced-dimension constraint included)
     const bool keep = DSMCParcel<particle>::move(cloud, td, trackTime);
@@ -52,14 +69,11 @@ bool Foam::gasParcel::moveAxisymmetric
 
     const scalar w0 = entered_ ? 1 : td.weightAt(this->position());
 
-    // Just inserted: it entered at a uniformly random time within the step
-    // (upstream moves it over the whole step, which leaves the layer next
-    // to a free-stream boundary short of the last half step's inflow)
-    if (entered_)
-    {
-        this->stepFraction() = cloud.rndGen().template sample01<scalar>();
-        entered_ = false;
-    }
+    // Just inserted: by default it entered at a uniformly random time
+    // within the step (upstream moves it over the whole step, which leaves
+    // the layer next to a free-stream boundary short of the last half
+    // step's inflow)
+    enter(cloud, td);
 
     while (td.keepParticle && !td.switchProcessor && this->stepFraction() < 1)
     {
@@ -71,18 +85,12 @@ bool Foam::gasParcel::moveAxisymmetric
         const point here = this->position();
         const point start(here.x(), here.y(), 0);
         const vector path = f*trackTime*U_;
-        const point end = start + path;
-        const vector chord
-        (
-            path.x(),
-            axisymmetricGas::radius(end) - here.y(),
-            -here.z()
-        );
+        const vector chord(axisymmetricMode::chord(here, path));
 
         this->trackToFace(chord, f);
 
         const scalar done = (this->stepFraction() - (1 - f))/f;
-        rotateVelocityTo(start + done*path);
+        axisymmetricMode::turn(U_, start + done*path);
 
         this->hitFace(chord, cloud, td);
     }

@@ -125,6 +125,13 @@ def set_entry(case, dict_path, entry, value):
                    check=True, stdout=subprocess.DEVNULL)
 
 
+def remove_entry(case, dict_path, entry):
+    """Remove one entry of a case dictionary with foamDictionary."""
+    subprocess.run(["foamDictionary", "-entry", entry, "-remove",
+                    os.path.join(case, dict_path)],
+                   check=True, stdout=subprocess.DEVNULL)
+
+
 def get_entry(case, dict_path, entry):
     """Value of one entry of a case dictionary (foamDictionary -value)."""
     return subprocess.run(["foamDictionary", "-entry", entry, "-value",

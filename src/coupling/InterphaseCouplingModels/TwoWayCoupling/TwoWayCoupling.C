@@ -230,11 +230,12 @@ Foam::label Foam::TwoWayCoupling<CloudType>::collideCell
             reemit(g, s);
             ++nAccepted;
 
-            // What the gas gained (all W_g real molecules)
+            // What the gas gained (all W_g RWF(r) real molecules)
+            const scalar Wg = Wg_*gasAxisymmetric_->weightAt(g.position());
             const scalar m = mass_[g.typeId()];
-            const vector dP(Wg_*m*(g.U() - c0));
+            const vector dP(Wg*m*(g.U() - c0));
             const scalar dE =
-                Wg_*(0.5*m*(magSqr(g.U()) - magSqr(c0)) + g.Ei() - Ei0);
+                Wg*(0.5*m*(magSqr(g.U()) - magSqr(c0)) + g.Ei() - Ei0);
             gained_.momentum += dP;
             gained_.energy += dE;
             gained_.momentumSqr += cmptSqr(dP);
@@ -304,6 +305,7 @@ Foam::TwoWayCoupling<CloudType>::TwoWayCoupling
     remainder_(owner.mesh().nCells(), Zero),
     nCollisionsTotal_(0),
     Wg_(0),
+    gasAxisymmetric_(nullptr),
     gained_(),
     mass_(),
     zeta_(),
@@ -331,6 +333,7 @@ void Foam::TwoWayCoupling<CloudType>::coupleGas(gasCloud& gas)
     const scalar dt = this->owner().db().time().deltaTValue();
     const auto& occupancy = gas.cellOccupancy();
     Wg_ = gas.nParticle();
+    gasAxisymmetric_ = &gas.axisymmetric();
     gained_ = gasGain();
 
     label nCandidates = 0;

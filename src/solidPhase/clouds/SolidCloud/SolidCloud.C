@@ -206,11 +206,100 @@ Foam::SolidCloud<CloudType>::SolidCloud
 )
 :
     CloudType(checkInput(cloudName, rho.mesh()), rho, U, mu, g, readFields),
-    account_("Parcels", rho.mesh().boundaryMesh(), this->size())
-{}
+    account_("Parcels", rho.mesh().boundaryMesh(), this->size()),
+    axisymmetric_(this->particleProperties(), rho.mesh(), cloudName)
+{
+    const dictionary& dict = this->particleProperties();
+    const polyMesh& mesh = rho.mesh();
+
+    if
+    (
+        !axisymmetric_.active()
+     && mesh.nGeometricD() == 2 && mesh.nSolutionD() == 3
+    )
+    {
+        inputChecks::badValue
+        (
+            dict, "axisymmetric", "false",
+            "true on a wedge mesh (v1912 would move the parcels in the"
+            " wedge's planes only)"
+        );
+    }
+
+    const dictionary& injection =
+        dict.subDict("subModels").subDict("injectionModels");
+    if (axisymmetric_.active() && injection.size())
+    {
+        inputChecks::badValue
+        (
+            injection, "injectionModels", injection.toc(),
+            "none with axisymmetric true (fill the cloud with"
+            " rarefiedMultiphaseInitialise)"
+        );
+    }
+
+    if (axisymmetric_.weighted())
+    {
+        account_.countWeighting();
+    }
+}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+template<class CloudType>
+bool Foam::SolidCloud<CloudType>::weighMove
+(
+    parcelType& p,
+    const point& start
+)
+{
+    if (!axisymmetric_.weighted())
+    {
+        return true;
+    }
+
+    const scalar w0 = axisymmetric_.weightAt(start);
+    const scalar w1 = axisymmetric_.weightAt(p.position());
+    if (w0 == w1)
+    {
+        return true;
+    }
+
+    // The parcel now carries the weight of where it is; RWF(r0)/RWF(r1)
+    // copies of it on average keep the real grains of the one that moved
+    p.nParticle() *= w1/w0;
+    const scalar ratio = w0/w1;
+
+    if (ratio < 1)
+    {
+        if (this->rndGen().template sample01<scalar>() >= ratio)
+        {
+            ++account_.deletedStep();
+            return false;
+        }
+        return true;
+    }
+
+    label nClones = label(ratio) - 1;
+    if (ratio - label(ratio) > this->rndGen().template sample01<scalar>())
+    {
+        ++nClones;
+    }
+
+    // Appended to the cloud being moved with the step done, so the move
+    // loop leaves them where they are
+    for (label i = 0; i < nClones; ++i)
+    {
+        parcelType* clone = new parcelType(p);
+        clone->origId() = clone->getNewParticleID();
+        this->addParticle(clone);
+    }
+    account_.clonedStep() += nClones;
+
+    return true;
+}
+
 
 template<class CloudType>
 void Foam::SolidCloud<CloudType>::setParcelThermoProperties

@@ -4,6 +4,7 @@
 
 #include "SolidParcel.H"
 #include "processorPolyPatch.H"
+#include "axisymmetricMode.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -66,6 +67,95 @@ bool Foam::SolidParcel<ParcelType>::hitPatch
     }
 
     return handled;
+}
+
+
+template<class ParcelType>
+template<class TrackCloudType>
+bool Foam::SolidParcel<ParcelType>::move
+(
+    TrackCloudType& cloud,
+    typename ParcelType::trackingData& td,
+    const scalar trackTime
+)
+{
+    const point start = this->position();
+
+    bool keep = ParcelType::move(cloud, td, trackTime);
+
+    if (!onWedge())
+    {
+        return keep;
+    }
+
+    typedef typename ParcelType::trackingData trackingData;
+    if
+    (
+        td.part() == trackingData::tpDampingNoTrack
+     || td.part() == trackingData::tpPackingNoTrack
+    )
+    {
+        this->UCorrect().z() = 0;
+    }
+
+    if (keep)
+    {
+        keep = cloud.weighMove(*this, start);
+        td.keepParticle = keep;
+    }
+
+    return keep;
+}
+
+
+template<class ParcelType>
+Foam::scalar Foam::SolidParcel<ParcelType>::trackToFace
+(
+    const vector& displacement,
+    const scalar fraction
+)
+{
+    if (!onWedge())
+    {
+        return ParcelType::trackToFace(displacement, fraction);
+    }
+
+    // Along the chord in the plane z = 0 to the radius where the straight
+    // 3-D path from the parcel's image there ends, turning the velocity
+    // by the angle of the 3-D point reached
+    const point here = this->position();
+    const scalar left = ParcelType::trackToFace
+    (
+        axisymmetricMode::chord(here, displacement),
+        fraction
+    );
+
+    axisymmetricMode::turn
+    (
+        this->U(),
+        point(here.x(), here.y(), 0) + (1 - left)*displacement
+    );
+
+    return left;
+}
+
+
+template<class ParcelType>
+template<class TrackCloudType>
+void Foam::SolidParcel<ParcelType>::hitWedgePatch
+(
+    TrackCloudType& cloud,
+    typename ParcelType::trackingData& td
+)
+{
+    if (onWedge())
+    {
+        this->hitSymmetryPatch(cloud, td);
+    }
+    else
+    {
+        ParcelType::hitWedgePatch(cloud, td);
+    }
 }
 
 

@@ -1,0 +1,234 @@
+"""Axisymmetric gas against a 3-D sector, and on 2 MPI ranks (SPEC.md 6
+and 8; issue 6 items 3 and 7).
+
+Case freeStreamPlate: an argon free stream (1e20 m^-3, 300 K, 1000 m/s
+along +x: Mach 3.1) enters through the inlet x = 0 and through the outer
+radius r = 0.05 m (FreeStream there too: the stream flows along it), and
+stops on a Maxwellian wall at 300 K at x = 0.05 m (the plate).  The gas
+piles up against the plate (density 1.1 to 9.4 times the free stream,
+temperature 500 to 1100 K, radial velocity up to 290 m/s): structure in x
+and r.  x, r in [0, 0.05] m in 16 x 12 cells.  Three runs:
+
+  wedge      axisymmetric, a 5 degree wedge, maxRadialWeight 5, serial;
+  sector30   full 3-D, a 30 degree sector about the x axis made of six
+             copies of the wedge turned about the axis (every cell a copy
+             of a wedge cell), its sides specular symmetry planes, no
+             weighting, serial, with randomEntryTime true: inserted
+             simulators start at a random time within their first step as
+             in the axisymmetric mode (upstream's full first step, the 3-D
+             default, leaves the inlet cells with 25 % less density, 60
+             standard errors: that is a difference of the inflow models,
+             not of the axisymmetric move);
+  parallel   the wedge on 2 METIS ranks (decomposePar, mpirun -np 2
+             -parallel, reconstructPar).
+
+Each runs 1100 steps of 2 us written every 50 (fieldAverage batch means).
+After 250 steps the batch means are steady (their mean offset over the
+bins from the later batches' is at most 0.25 of a batch's standard
+deviation), so the first 5 batches are dropped and 17 kept.
+
+Comparisons (meridional.py): number density, x and radial velocity and
+translational temperature in the 16 x 12 (x, r) bins (the 3-D cells by x
+and sqrt(y^2 + z^2)), the difference of the two runs' batch means in
+combined standard errors sqrt(se_a^2 + se_b^2).  Batches of 50 steps are
+independent: the lag-1 correlation of the batch means is -0.02 (median over
+bins), the flow crossing the domain in 25 steps.  Per field a run fails
+  - if any bin is beyond MAX_DEV = 5 (Welch's t with about 32 degrees of
+    freedom: P(|t| > 5) = 2e-5 per bin, under 0.5 % for the 192 bins), or
+  - if the mean of dev^2 over the bins exceeds MAX_CHI2 = 2.5: for
+    independent bins E[t^2] = 1.07 with a standard deviation of 0.12 for
+    the mean over 192 bins.  Measured: 0.88-1.36 for the parallel run
+    against the serial one, 1.21-1.46 for the sector's n, Ux, Ur, and
+    1.84 for its temperature, which carries an offset common to the
+    bins: the axisymmetric run is 0.7 +- 0.2 % hotter than the sector
+    averaged over the bins (+0.3 +- 0.14 % with 1.5 times the simulators
+    and 18 batches; mean dev +0.6 and +0.4), a small difference between
+    the weighted axisymmetric gas and the 3-D one (e.g. the clones that
+    never collide with their parent, CHANGELOG) that no single bin
+    resolves.  2.5 leaves room for it and still fails a bias of about
+    1.2 standard errors in every bin.
+
+Broken by hand (not committed), the checks fail: with the cloning of
+the radial weighting off the wedge has 25 % less gas (n 68, Ux 33, Ur 31,
+T 26 standard errors against the sector); sampled without the weights its
+density is off by up to 294 standard errors; with the weighting skipped
+where a move stops at a processor boundary the 2-rank run is off by 8.8
+(n), 7.2 (Ux) and 10.2 (Ur); with the weighting's deletions left
+uncounted every step's inflow misses what FreeStream inserted; and the
+sector with upstream's full first step (randomEntryTime false) is off
+by 62 (n) in the inlet cells.
+
+Cost: about 32 s of CPU per run (20000 simulators, 1100 steps); the
+module took 111 s of wall time on 2 cores shared with other jobs (the
+wedge and the sector run side by side, then the 2-rank run).
+
+Account: every step the simulators that came in (the account's balance)
+equal those the FreeStream model reports inserted, nothing is lost away
+from patches, and the inserted total equals the analytic free-stream flux
+(Bird 1994 eq. 4.22) through the inlet and outer faces to within the
+number of those faces (FreeStream carries each face's fractional
+remainder to the next step).
+"""
+
+import math
+import os
+import time
+
+import numpy as np
+import pytest
+
+from rmf import foam
+
+import meridional as md
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+CASE = os.path.join(HERE, "freeStreamPlate")
+BUILD = os.path.join(foam.PROJECT_DIR, "build", "validation", "axisymmetricGas")
+
+LENGTH = 0.05                               # x extent [m]
+ROWS_RADIUS = 0.05 * math.cos(math.radians(2.5))   # outer faces' distance
+NX, NR = 16, 12                             # (x, r) cells
+SKIP = 5                                    # batches dropped (250 steps)
+MASS = 66.3e-27
+N0, T0, U0 = 1e20, 300.0, 1000.0            # free stream
+K_B = 1.380649e-23
+
+MAX_DEV = 5.0       # combined standard errors, any bin
+MAX_CHI2 = 2.5      # mean of dev^2 over the bins
+
+# nEquivalentParticles: the sector has 6 times the wedge's volume and no
+# weighting; 4.5e11 gives it about as many simulators as the wedge (21000
+# against 20000 once steady), a third of the wedge's in the bins at the
+# axis and 1.7 times in those at the outer radius
+WEIGHT = {"wedge": 2.4e10, "sector30": 4.5e11, "parallel": 2.4e10}
+
+SECONDS = {}
+
+
+def _setup(name):
+    case = foam.copy_setup(CASE, os.path.join(BUILD, "freeStreamPlate", name))
+    props = "constant/dsmcProperties"
+    if name == "sector30":
+        foam.run(case, "blockMesh", "-dict", "system/blockMeshDict.sector30")
+        for key in ("axisymmetric", "radialExtent", "maxRadialWeight"):
+            foam.remove_entry(case, props, key)
+        foam.set_entry(case, props, "randomEntryTime", "true")
+    else:
+        foam.run(case, "blockMesh")
+    foam.set_entry(case, props, "nEquivalentParticles", WEIGHT[name])
+    foam.run(case, "rarefiedMultiphaseInitialise")
+    return case
+
+
+def _run(case, name, np_=1):
+    start = time.time()
+    if np_ > 1:
+        foam.run(case, "decomposePar")
+    foam.run(case, "rarefiedMultiphaseFoam", np_=np_)
+    if np_ > 1:
+        foam.run(case, "reconstructPar", "-noLagrangian")
+    SECONDS[name] = time.time() - start
+
+
+@pytest.fixture(scope="module")
+def runs():
+    from concurrent.futures import ThreadPoolExecutor
+    cases = {name: _setup(name) for name in WEIGHT}
+    with ThreadPoolExecutor(max_workers=2) as pool:
+        jobs = [pool.submit(_run, cases[name], name) for name in ("wedge", "sector30")]
+        for job in jobs:
+            job.result()
+    _run(cases["parallel"], "parallel", np_=2)
+    print("axisymmetricGas freeStreamPlate run times [s]: "
+          + ", ".join(f"{k} {v:.0f}" for k, v in SECONDS.items()))
+    return cases
+
+
+def _binned(case):
+    bins = md.bin_index(foam.cell_centres(case), LENGTH, ROWS_RADIUS, NX, NR)
+    return md.binned_batches(case, bins, NX * NR, MASS, SKIP)
+
+
+@pytest.fixture(scope="module")
+def binned(runs):
+    return {name: _binned(case) for name, case in runs.items()}
+
+
+def _report(ok, what, figures):
+    print(f"{'PASS' if ok else 'FAIL'} axisymmetricGas {what}: {figures}")
+    return ok
+
+
+def _check(binned, a, b):
+    result = md.compare(binned[a], binned[b])
+    ok = True
+    for name, (mean_a, _, se, dev) in result.items():
+        worst = np.unravel_index(abs(dev).argmax(), (NX, NR))
+        scale = abs(mean_a).max()
+        chi2 = (dev ** 2).mean()
+        field_ok = abs(dev).max() < MAX_DEV and chi2 < MAX_CHI2
+        ok &= _report(field_ok, f"freeStreamPlate {a} vs {b} {name}",
+                      f"max |dev| {abs(dev).max():.2f} (limit {MAX_DEV}) at "
+                      f"(x, r) bin {worst}, mean dev {dev.mean():+.2f}, "
+                      f"mean dev^2 {chi2:.2f} "
+                      f"(limit {MAX_CHI2}), se {se.min() / scale:.4f}-"
+                      f"{se.max() / scale:.4f} of the field's largest value")
+    return ok
+
+
+def test_sector_matches_axisymmetric(binned):
+    """The wedge (axisymmetric, weighted) and the 3-D sector agree in every
+    (x, r) bin within noise."""
+    assert _check(binned, "wedge", "sector30")
+
+
+def test_parallel_matches_serial(binned):
+    """The wedge on 2 ranks, reconstructed, agrees with the serial wedge."""
+    assert _check(binned, "wedge", "parallel")
+
+
+def _inflow_per_step(case, sectors):
+    """Analytic simulators entering per step through the inlet (drift U0
+    into the domain) and the outer radius (drift along it), Bird eq. 4.22:
+    n c_mp A (exp(-s^2) + sqrt(pi) s (1 + erf s))/(2 sqrt(pi)), with the
+    faces of `sectors` copies of the 5 degree wedge."""
+    dt = float(foam.get_entry(case, "system/controlDict", "deltaT"))
+    weight = float(foam.get_entry(case, "constant/dsmcProperties", "nEquivalentParticles"))
+    c_mp = math.sqrt(2 * K_B * T0 / MASS)
+    half = math.radians(2.5)
+    r = 0.05                                       # vertex radius
+    inlet = sectors * r * r * math.sin(half) * math.cos(half)
+    outer = sectors * LENGTH * 2 * r * math.sin(half)
+
+    def flux(s):
+        return (math.exp(-s * s) + math.sqrt(math.pi) * s * (1 + math.erf(s))) \
+            / (2 * math.sqrt(math.pi))
+
+    return N0 / weight * c_mp * dt * (inlet * flux(U0 / c_mp) + outer * flux(0))
+
+
+@pytest.mark.parametrize("name", ["wedge", "sector30", "parallel"])
+def test_account(runs, name):
+    """Every simulator accounted for: in each step the balance's inflow is
+    what FreeStream inserted, nothing lost, and the inserted total is the
+    analytic flux (to within one simulator per inflow face)."""
+    case = runs[name]
+    log = os.path.join(case, "log.rarefiedMultiphaseFoam")
+    inserted = foam.log_values(log, "Particles inserted")[:, 0]
+    in_out = foam.log_values(log, "Simulators in / out this step")
+    with open(log) as f:
+        text = f.read()
+    lost = "lost away from patches" in text
+    sectors = 6 if name == "sector30" else 1
+    faces = sectors * (NR + NX)
+    expected = _inflow_per_step(case, sectors) * len(inserted)
+    mismatched = int((in_out[:, 0] != inserted).sum())
+    out = {p: foam.log_values(log, f"out through {p}")[-1, 0]
+           for p in ("inlet", "outer") if f"out through {p}" in text}
+    figures = (f"{len(inserted)} steps, inserted {inserted.sum():.0f} "
+               f"(analytic {expected:.1f}, off by {inserted.sum() - expected:.1f}, "
+               f"limit {faces} faces), steps where in != inserted: {mismatched}, "
+               f"out {out}, lost: {lost}")
+    ok = (len(inserted) == len(in_out) and not mismatched and not lost
+          and abs(inserted.sum() - expected) < faces)
+    assert _report(ok, f"freeStreamPlate {name} account", figures)
