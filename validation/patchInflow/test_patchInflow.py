@@ -35,7 +35,6 @@ face is known from its (y, z).  Checks:
 
 import math
 import os
-import re
 
 import numpy as np
 import pytest
@@ -144,13 +143,6 @@ def meshed():
     return case
 
 
-def read_positions(path):
-    with open(path) as f:
-        text = f.read()
-    return np.array([[float(v) for v in m.group(1).split()]
-                     for m in re.finditer(r"\(([^()]*)\)\s+-?\d+", text)])
-
-
 def flux(n, T, q_n, m):
     """Bird (1994) eq. 4.22: one-sided number flux [1/m^2/s]."""
     cmp = np.sqrt(2*K*T/m)
@@ -171,7 +163,7 @@ def inflow(meshed):
     log = foam.run(case, "rarefiedMultiphaseFoam")
     t = foam.latest_time(case)
     base = os.path.join(case, t, "lagrangian", "dsmc")
-    pos = read_positions(os.path.join(base, "positions"))
+    pos = foam.read_positions(os.path.join(base, "positions"))
     U = foam.read_list(os.path.join(base, "U"))
     Ei = foam.read_list(os.path.join(base, "Ei"))
     typeId = foam.read_list(os.path.join(base, "typeId")).astype(int)

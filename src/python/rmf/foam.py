@@ -214,6 +214,29 @@ def read_list(path):
     return values
 
 
+_POSITION = re.compile(rb"\(([^()]*)\)\s+(-?\d+)")
+
+
+def read_positions(path, cells=False):
+    """Parcel positions (n, 3) of an ASCII lagrangian `positions` file,
+    whose lines are "(x y z) celli" (OpenFOAM's legacy position format);
+    with cells=True also the cell of each parcel, (n,) integers."""
+    with open(path, "rb") as f:
+        text = f.read()
+    m = re.search(rb"\n(\d+)\s*\n\(", text)
+    table = None
+    if m:       # fast path: the list body as rows of 4 numbers
+        body = text[m.end():text.index(b"\n)", m.end())].translate(None, b"()").split()
+        if len(body) == 4*int(m.group(1)):
+            table = np.array(body, float).reshape(-1, 4)
+    if table is None:
+        found = _POSITION.findall(text)
+        table = np.array([p.split() + [c] for p, c in found], float).reshape(-1, 4)
+    if cells:
+        return table[:, :3], table[:, 3].astype(int)
+    return table[:, :3]
+
+
 def read_patch_field(path, patch):
     """Values of one patch of an ASCII vol field file: (faces,) or (faces, 3)."""
     with open(path, "rb") as f:
