@@ -226,10 +226,10 @@ def test_not_a_wedge():
         assert text in out, text
 
 
-def test_grains_refused(meshed):
-    """Grains in an axisymmetric gas case: not available yet (the grains
-    would be neither rotated nor weighted), so the solver stops naming
-    the keyword and both dictionaries."""
+def test_grains_need_axisymmetric(meshed):
+    """Grains on the wedge must be axisymmetric too (v1912 would move them in
+    the wedge's planes only), and both phases must agree: the solver stops
+    naming the keyword and the dictionaries."""
     case = foam.copy_case(meshed, os.path.join(BUILD, "withGrains"))
     foam.run(case, "rarefiedMultiphaseInitialise")      # the gas alone
     snider = os.path.join(foam.PROJECT_DIR, "tutorials", "solids", "sniderSedimentation")
@@ -238,6 +238,16 @@ def test_grains_refused(meshed):
     foam.set_entry(case, "constant/grainsProperties", "subModels/interphaseCoupling", "none")
     foam.set_entry(case, "constant/grainsProperties", "subModels/patchInteractionModel", "none")
     out = foam.run_failing(case, "rarefiedMultiphaseFoam")
-    for text in ("FOAM FATAL IO ERROR", "dsmcProperties", "axisymmetric true",
-                 "constant/grainsProperties", "not available for grains"):
+    for text in ("FOAM FATAL IO ERROR", "'axisymmetric'", "constant/grainsProperties",
+                 "true on a wedge mesh"):
+        assert text in out, (text, out[-1500:])
+
+    # Grains axisymmetric, the gas not
+    foam.set_entry(case, "constant/grainsProperties", "axisymmetric", "true")
+    foam.set_entry(case, "constant/grainsProperties", "radialExtent", EXTENT)
+    for key in ("axisymmetric", "radialExtent", "maxRadialWeight"):
+        foam.remove_entry(case, "constant/dsmcProperties", key)
+    out = foam.run_failing(case, "rarefiedMultiphaseFoam")
+    for text in ("FOAM FATAL IO ERROR", "'axisymmetric'", "constant/grainsProperties",
+                 "constant/dsmcProperties"):
         assert text in out, (text, out[-1500:])

@@ -14,15 +14,23 @@ turned back into the meridional plane, and are weighted radially.
    grains of 0.1 mm at alpha 1e-3, sigmaU = 1 m/s, wedge x, r in [0, 0.05]
    m, 10 x 10 cells; 1000 steps of 0.2 ms, 4 crossings of the radius)
    stays uniform in alpha by radius, with radial weighting
-   (maxRadialWeight 10) and without.  Noise: the 19 snapshots after the
-   first (10 ms apart, while a parcel crosses a 5 mm row in about 3 ms:
-   nearly independent) give each row's standard error; a row fails beyond
-   5 standard errors (t-distribution, 18 d.o.f.: P(|t| > 5) < 1e-4 per
-   row) or when its standard error exceeds 3 % (measured 0.7-2.1 %).
+   (maxRadialWeight 10) and without.  Noise: the 39 snapshots after the
+   first (5 ms apart, while a parcel crosses a 5 mm row in about 3 ms:
+   nearly independent; any correlation left makes the standard error
+   smaller, the test stricter) give each row's standard error; a row fails
+   beyond 5 standard errors (t-distribution, 38 d.o.f.: P(|t| > 5) < 1e-4
+   per row) or when its standard error exceeds 4 % (the inner row, with
+   the fewest parcels in clusters of clones, is the noisiest: measured
+   2.0 % serial and 2.7 % on 2 ranks, 4.4 % on 2 ranks with 19 snapshots;
+   the other rows 0.2-1.5 %; largest deviations 1.5, 4.0 and 3.4 se).
+   Without the turn of the velocity the inner row holds 61 times the
+   mean.
    The parcel account balances exactly (no loss), the parcel count stays
    within 10 % of the start (measured within 2 %), and the real grains
    (sum of nParticle) stay within 5 standard deviations of the random walk
    of the clone and delete steps (each changes it by one parcel's weight).
+   The weighted case also runs on 2 METIS ranks (parcels cloned at and
+   moving across the processor boundary) with the same checks.
 
 3. Coupling sums with radial weights on both sides: grains of 10 um at
    100 K held in argon at rest (1e20 m^-3, 300 K; the gas wedge of
@@ -53,7 +61,7 @@ BUILD = os.path.join(foam.PROJECT_DIR, "build", "validation", "axisymmetricGrain
 K_B = 1.380649e-23
 ALPHA0 = 1e-3
 MAX_DEV = 5.0       # standard errors
-MAX_SE = 0.03       # relative standard error a row may have
+MAX_SE = 0.04       # relative standard error a row may have
 
 
 def _report(ok, what, figures):
@@ -78,12 +86,16 @@ def _set(case, entries):
         foam.set_entry(case, path, entry, value)
 
 
-def _run(name, entries=(), src=WEDGE):
+def _run(name, entries=(), src=WEDGE, np_=1):
     case = foam.copy_setup(src, os.path.join(BUILD, name))
     _set(case, entries)
     foam.run(case, "blockMesh")
     foam.run(case, "rarefiedMultiphaseInitialise")
-    foam.run(case, "rarefiedMultiphaseFoam")
+    if np_ > 1:
+        foam.run(case, "decomposePar")
+    foam.run(case, "rarefiedMultiphaseFoam", np_=np_)
+    if np_ > 1:
+        foam.run(case, "reconstructPar")
     return case
 
 
@@ -117,16 +129,17 @@ def test_azimuthal_drift():
     assert _report(err.max() < 1e-4, "azimuthal drift", figures)
 
 
-UNIFORM = {"weighted": 10, "unweighted": 1}
+# name: (maxRadialWeight, MPI ranks)
+UNIFORM = {"weighted": (10, 1), "unweighted": (1, 1), "weighted2ranks": (10, 2)}
 
 
 @pytest.fixture(scope="module")
 def uniform():
     out = {}
-    for name, max_weight in UNIFORM.items():
+    for name, (max_weight, ranks) in UNIFORM.items():
         out[name] = _run(f"uniform_{name}", [
             ("constant/grainsProperties", "maxRadialWeight", max_weight),
-        ])
+        ], np_=ranks)
     return out
 
 
@@ -181,7 +194,7 @@ def test_uniform_account(uniform, name):
     figures = (f"parcels {n0} -> {present[-1]:.0f} (range {present.min():.0f}-"
                f"{present.max():.0f}, limit 10 %), lost {lost}")
     ok = not lost and abs(present - n0).max() < 0.1 * n0
-    if UNIFORM[name] > 1:
+    if UNIFORM[name][0] > 1:
         cloned, deleted = foam.log_values(log, "Parcels cloned / deleted since start")[-1]
         # each clone or deletion moves the real total by one parcel's weight
         sigma = math.sqrt((cloned + deleted) * np.mean(W1 ** 2))
