@@ -449,23 +449,19 @@ bool Foam::gasCloud::weighMove
         return true;
     }
 
-    const scalar ratio = w0/axisymmetric_.weightAt(p.position());
+    const label nCopies = axisymmetricMode::copies
+    (
+        w0, axisymmetric_.weightAt(p.position()), rndGen()
+    );
 
-    if (ratio < 1)
+    if (!nCopies)
     {
-        if (rndGen().sample01<scalar>() >= ratio)
-        {
-            ++account_.deletedStep();
-            return false;
-        }
+        ++account_.deletedStep();
+        return false;
     }
-    else if (ratio > 1)
+    if (nCopies > 1)
     {
-        label nClones = label(ratio) - 1;
-        if (ratio - label(ratio) > rndGen().sample01<scalar>())
-        {
-            ++nClones;
-        }
+        const label nClones = nCopies - 1;
 
         // Appended to the cloud being moved: the move loop reaches a
         // clone (or not, if appended while the last member moves) with

@@ -214,8 +214,7 @@ Foam::SolidCloud<CloudType>::SolidCloud
 
     if
     (
-        !axisymmetric_.active()
-     && mesh.nGeometricD() == 2 && mesh.nSolutionD() == 3
+        !axisymmetric_.active() && axisymmetricMode::wedgeMesh(mesh)
     )
     {
         inputChecks::badValue
@@ -261,31 +260,19 @@ bool Foam::SolidCloud<CloudType>::weighMove
 
     const scalar w0 = axisymmetric_.weightAt(start);
     const scalar w1 = axisymmetric_.weightAt(p.position());
-    if (w0 == w1)
-    {
-        return true;
-    }
 
     // The parcel now carries the weight of where it is; RWF(r0)/RWF(r1)
     // copies of it on average keep the real grains of the one that moved
     p.nParticle() *= w1/w0;
-    const scalar ratio = w0/w1;
+    const label nCopies = axisymmetricMode::copies(w0, w1, this->rndGen());
 
-    if (ratio < 1)
+    if (!nCopies)
     {
-        if (this->rndGen().template sample01<scalar>() >= ratio)
-        {
-            ++account_.deletedStep();
-            return false;
-        }
-        return true;
+        ++account_.deletedStep();
+        return false;
     }
 
-    label nClones = label(ratio) - 1;
-    if (ratio - label(ratio) > this->rndGen().template sample01<scalar>())
-    {
-        ++nClones;
-    }
+    const label nClones = nCopies - 1;
 
     // Appended to the cloud being moved with the step done, so the move
     // loop leaves them where they are

@@ -4,7 +4,6 @@
 
 #include "SolidParcel.H"
 #include "processorPolyPatch.H"
-#include "axisymmetricMode.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
