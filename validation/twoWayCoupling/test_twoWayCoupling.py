@@ -27,6 +27,15 @@ randomSeed).
   temperature gap at (1 + C_s/C_g) pi R^2 n <c> 2k/(m_p c_p) ~ 700 /s, so
   700 steps are ~5 relaxation times; a gas simulator meets a grain with
   probability ~2e-3 per step (logged: "largest probability").
+  Dense runs (twoWayIndirect-dense, twoWayDirect-dense): 1000 times the
+  grains per parcel (M_s = 1000 M_g), so that a simulator meets ~1.6
+  grains per step (largest 2.3): the one cell is sub-cycled
+  (TwoWayCoupling.H, maxCollisionsPerStep 0.1: some 20 sub-steps) at
+  every step; 20 steps written every 2, in which the gas relaxes onto the
+  grains.  Without the sub-cycling the grains receive about as many
+  times the gas's momentum as it makes collisions per step: momentum
+  fails check 1 by 77-220 sigma and the grains' velocity moves 3 m/s
+  too far (measured, maxCollisionsPerStep 1e30).
 
 Analytic common state, from the initial totals (read from the written
 simulators and parcels: P = sum W m c, E = sum W (m |c|^2/2 + E_int) for
@@ -55,16 +64,20 @@ square's expectation).  sigma = sqrt(S).
    mean T_p) within 5 sigma_E/C_g of T_f (the error of the totals, which
    mostly sits in the gas first, plus the lag of the phases behind each
    other's noise), and the residual of the relaxation, exp(-5) of the
-   initial gaps, is below these.
+   initial gaps, is below these.  Dense runs: the gas's sampling noise
+   instead, 5 sqrt(k T_f/(m_g N_g)) and 5 T_f sqrt(2/(3 N_g)) (the
+   grains hardly move; the totals' random walk is spread over their
+   mass).
 3. Collision rate: over the last write interval (both phases at rest
    relative to each other, at T ~ T_f) the mean accepted collisions per
    step equal N_g n_s pi R^2 <c> dt, <c> = sqrt(8 k T_g/(pi m_g)) the
    mean relative speed of molecules and grains at rest (the slip left is
    a few m/s: an O(s^2) ~ 1e-4 correction), n_s the real-grain number
-   density: within 5 Poisson sigma (sqrt of the count).  This is what
+   density: within 5 sigma, sigma from the Poisson count and the
+   sampling error of T_g (half of sqrt(2/(3 N_g)) in <c>).  This is what
    makes the unequal weights right (the gas side uses n_s, not the
    parcel count).
-4. Bad input: averagingSteps 0, randomSeed 2001, an unknown keyword in
+4. Bad input: averagingSteps 0, randomSeed 2001, maxCollisionsPerStep 0, an unknown keyword in
    <type>Coeffs stop the solver with a FatalIOError naming file, keyword,
    value and the valid range or keywords.
 
@@ -87,13 +100,16 @@ W_GAS = 1.6e12
 D, RHO_P, CP_P, T_P0, U_P0 = 1e-5, 1.2, 400.0, 500.0, -300.0
 N_PARCELS, W_S = 10, 3.374e5
 DT, STEPS, WRITE_EVERY = 1e-5, 700, 100
+DENSE_STEPS, DENSE_EVERY = 20, 2
 N_SIGMA = 5
 GAIN = "Gas gain from grains: momentum, energy, sums of squares"
 COUNTS = "Gas-grain candidates, collisions, since start, largest probability"
+CYCLED = "Gas-grain sub-cycled cells, largest sub-steps"
+DENSE = 1000
 
 
 def make_case(name, coupling, coeffs=None, n_gas=N_GAS, steps=STEPS, species="Ar",
-              eps=0.0, alpha=1.0):
+              eps=0.0, alpha=1.0, w_s=W_S, every=WRITE_EVERY):
     """The box with one gas species and the grains above, meshed and
     filled."""
     case = copy_box(os.path.join(BUILD, name), species, n_gas, eps, alpha, coupling)
@@ -109,11 +125,11 @@ def make_case(name, coupling, coeffs=None, n_gas=N_GAS, steps=STEPS, species="Ar
         foam.set_entry(case, PROPS, f"subModels/{coupling}Coeffs/{key}", value)
     foam.set_entry(case, GRAINS, "regions/grain/d", D)
     foam.set_entry(case, GRAINS, "regions/grain/nParcels", N_PARCELS)
-    foam.set_entry(case, GRAINS, "regions/grain/nParticle", W_S)
+    foam.set_entry(case, GRAINS, "regions/grain/nParticle", w_s)
     foam.set_entry(case, GRAINS, "regions/grain/U0", f"({U_P0:g} 0 0)")
     foam.set_entry(case, CONTROL, "deltaT", DT)
     foam.set_entry(case, CONTROL, "endTime", f"{steps*DT:.6g}")
-    foam.set_entry(case, CONTROL, "writeInterval", WRITE_EVERY)
+    foam.set_entry(case, CONTROL, "writeInterval", every)
     foam.run(case, "blockMesh")
     foam.run(case, "rarefiedMultiphaseInitialise")
     return case
@@ -166,27 +182,37 @@ def report(ok, text):
 # The two box runs (one each, shared by the checks)
 
 RUNS = {
-    # name: (model, coefficients, species, eps, alpha_T)
-    "twoWayDirect": ("twoWayDirect", {"randomSeed": 3}, "Ar", 0.0, 1.0),
+    # name: (model, coefficients, species, eps, alpha_T, grains per parcel)
+    "twoWayDirect": ("twoWayDirect", {"randomSeed": 3}, "Ar", 0.0, 1.0, W_S),
     "twoWayIndirect": ("twoWayIndirect", {"randomSeed": 3, "averagingSteps": 2},
-                       "Ar", 0.0, 1.0),
-    "twoWayDirect-N2": ("twoWayDirect", {"randomSeed": 4}, "N2", 0.1, 0.8),
+                       "Ar", 0.0, 1.0, W_S),
+    "twoWayDirect-N2": ("twoWayDirect", {"randomSeed": 4}, "N2", 0.1, 0.8, W_S),
+    # Dense (header, "dense runs"): DENSE times the grains, so that a
+    # simulator meets ~2 grains per step and the cell is sub-cycled
+    "twoWayIndirect-dense": ("twoWayIndirect",
+                             {"randomSeed": 5, "averagingSteps": 2},
+                             "Ar", 0.0, 1.0, DENSE*W_S),
+    "twoWayDirect-dense": ("twoWayDirect", {"randomSeed": 6}, "Ar", 0.0, 1.0,
+                           DENSE*W_S),
 }
 
 
 @pytest.fixture(scope="module", params=list(RUNS))
 def box(request):
-    model, coeffs, species, eps, alpha = RUNS[request.param]
+    model, coeffs, species, eps, alpha, w_s = RUNS[request.param]
     m_g, zeta = MASS[species], ZETA[species]
-    case = make_case(f"box_{request.param}", model, coeffs, species=species,
-                     eps=eps, alpha=alpha)
+    dense = w_s > W_S
+    steps, every = (DENSE_STEPS, DENSE_EVERY) if dense else (STEPS, WRITE_EVERY)
+    case = make_case(f"box_{request.param}", model, coeffs, steps=steps, species=species,
+                     eps=eps, alpha=alpha, w_s=w_s, every=every)
     log = foam.run(case, "rarefiedMultiphaseFoam")
     times = foam.times(case)
-    assert len(times) == STEPS//WRITE_EVERY + 1, times
+    assert len(times) == steps//every + 1, times
     gains = foam.log_values(log, GAIN)
     counts = foam.log_values(log, COUNTS)
-    assert gains.shape == (STEPS, 8) and counts.shape == (STEPS, 4), \
-        (gains.shape, counts.shape)
+    cycled = foam.log_values(log, CYCLED)
+    assert gains.shape == (steps, 8) and counts.shape == (steps, 4) \
+        and cycled.shape == (steps, 2), (gains.shape, counts.shape, cycled.shape)
     states = [state(case, t, m_g) for t in times]
     s0 = states[0]
     M_g = W_GAS*m_g*s0["Ng"]
@@ -197,7 +223,7 @@ def box(request):
     U_f = P0/M
     T_f = (E0 - 0.5*M*(U_f @ U_f))/(C_g + s0["Cs"])
     return dict(model=request.param, m_g=m_g, case=case, times=times, gains=gains, counts=counts,
-                states=states, M_g=M_g, C_g=C_g, P0=P0, E0=E0, U_f=U_f, T_f=T_f)
+                cycled=cycled, dense=dense, every=every, states=states, M_g=M_g, C_g=C_g, P0=P0, E0=E0, U_f=U_f, T_f=T_f)
 
 
 def test_conservation(box):
@@ -212,7 +238,7 @@ def test_conservation(box):
     worst_P = worst_E = 0.0
     ok = True
     for k, s in enumerate(box["states"][1:], 1):
-        n = k*WRITE_EVERY
+        n = k*box["every"]
         sigma_P = math.sqrt(box["gains"][:n, 4].sum())
         sigma_E = math.sqrt(box["gains"][:n, 7].sum())
         dP = s["Pg"][0] + s["Ps"][0] - box["P0"][0]
@@ -242,6 +268,13 @@ def test_common_final_state(box):
     tol_U = N_SIGMA*sigma_P/box["M_g"]
     tol_T = N_SIGMA*sigma_E/box["C_g"]
     U_f, T_f = box["U_f"][0], box["T_f"]
+    if box["dense"]:
+        # The grains (1000 times the gas's mass) hardly move, and the gas
+        # relaxes onto them within a few steps: the sampling noise of the
+        # gas's mean velocity and temperature (N_g simulators) bounds the
+        # errors, far below the totals' random walk above
+        tol_U = N_SIGMA*math.sqrt(K*T_f/(box["m_g"]*end["Ng"]))
+        tol_T = N_SIGMA*T_f*math.sqrt(2/(3*end["Ng"]))
     errors = {
         "U_gas": end["Ug"][0] - U_f, "U_grains": end["Us"][0] - U_f,
         "T_gas": end["Tg"] - T_f, "T_grains": end["Ts"] - T_f,
@@ -260,21 +293,31 @@ def test_collision_rate(box):
     """Accepted gas-grain collisions per step at the end against the
     real-grain free-molecular rate (header, check 3)."""
     end = box["states"][-1]
-    last = box["counts"][-WRITE_EVERY:, 1]
+    last = box["counts"][-box["every"]:, 1]
     measured = last.mean()
     n_s = end["Ns"]/V_CELL
     cbar = math.sqrt(8*K*end["Tg"]/(math.pi*box["m_g"]))
     expected = end["Ng"]*n_s*math.pi*(D/2)**2*cbar*DT
-    sigma = math.sqrt(last.sum())/len(last)
+    # Poisson, and the sampling error of T_g (N_g simulators: relative
+    # sqrt(2/(3 N_g)), half of it in <c>), which the dense runs' many
+    # collisions resolve
+    sigma = math.hypot(math.sqrt(last.sum())/len(last),
+                       expected*0.5*math.sqrt(2/(3*end["Ng"])))
     err = measured/expected - 1
     ok = abs(measured - expected) <= N_SIGMA*sigma
     report(ok, f"{box['model']} collisions per step over the last "
-           f"{WRITE_EVERY} steps: {measured:.3f}, expected {expected:.3f} "
-           f"({100*err:+.2f} %, Poisson sigma {100*sigma/expected:.2f} %, "
+           f"{box['every']} steps: {measured:.3f}, expected {expected:.3f} "
+           f"({100*err:+.2f} %, sigma {100*sigma/expected:.2f} %, "
            f"tolerance {N_SIGMA} sigma); largest per-simulator probability "
            f"{box['counts'][:, 3].max():.2e}")
     assert ok, err
-    assert box["counts"][:, 3].max() < 0.01
+    if box["dense"]:
+        # The one cell sub-cycled at every step (maxCollisionsPerStep 0.1)
+        assert (box["cycled"][:, 0] == 1).all() and box["cycled"][:, 1].min() > 10, \
+            box["cycled"][:5]
+    else:
+        assert box["counts"][:, 3].max() < 0.01
+        assert (box["cycled"] == [0, 1]).all()
 
 
 # ---------------------------------------------------------------------------
@@ -290,7 +333,8 @@ def small():
     ("twoWayIndirect", "averagingSteps", 0, ("0", "[1, ")),
     ("twoWayDirect", "randomSeed", 2001, ("2001", "[0, 2000]")),
     ("twoWayIndirect", "averagingStep", 10, ("Unknown keyword", "averagingSteps",
-                                            "randomSeed")),
+                                            "randomSeed", "maxCollisionsPerStep")),
+    ("twoWayDirect", "maxCollisionsPerStep", 0, ("0", "(0, inf)")),
 ])
 def test_bad_input(small, model, key, value, texts):
     case = foam.copy_case(small, os.path.join(BUILD, f"bad_{model}_{key}"))

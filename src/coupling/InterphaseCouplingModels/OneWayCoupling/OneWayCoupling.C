@@ -34,6 +34,29 @@ Foam::OneWayCoupling<CloudType>::OneWayCoupling
 // * * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * //
 
 template<class CloudType>
+void Foam::OneWayCoupling<CloudType>::actOnCell
+(
+    const label celli,
+    const UList<parcelType*>& parcels,
+    const UList<gasParcel*>& inCell,
+    const scalar Wg,
+    const scalar dt
+)
+{
+    const scalar V = this->owner().mesh().V()[celli];
+
+    sums_->gather(inCell);
+    vector dP;
+    scalar dE;
+    for (parcelType* pPtr : parcels)
+    {
+        sums_->apply(*pPtr, Wg, V, dt, dP, dE);
+        this->addExchange(celli, dP, dE);
+    }
+}
+
+
+template<class CloudType>
 void Foam::OneWayCoupling<CloudType>::parcelForcesAndHeat(gasCloud* gasPtr)
 {
     gasCloud& gas = *gasPtr;
@@ -44,30 +67,31 @@ void Foam::OneWayCoupling<CloudType>::parcelForcesAndHeat(gasCloud* gasPtr)
 
     CloudType& cloud = this->owner();
     const scalar dt = cloud.db().time().deltaTValue();
-    const scalarField& V = cloud.mesh().V();
     const scalar Wg = gas.nParticle();
     const auto& occupancy = gas.cellOccupancy();
 
-    vector dP;
-    scalar dE;
-    label gathered = -1;
-    for (parcelType* pPtr : freeMolecularSums::byCell(cloud))
+    // The parcels cell by cell: each cell's run [start, end) of the list
+    const auto parcels = freeMolecularSums::byCell(cloud);
+    for (label start = 0, end = 0; start < parcels.size(); start = end)
     {
-        parcelType& p = *pPtr;
-        const label celli = p.cell();
-        const auto& inCell = occupancy[celli];
-        if (inCell.empty())
+        const label celli = parcels[start]->cell();
+        while (end < parcels.size() && parcels[end]->cell() == celli)
         {
-            continue;
-        }
-        if (celli != gathered)
-        {
-            sums_->gather(inCell);
-            gathered = celli;
+            ++end;
         }
 
-        sums_->apply(p, Wg, V[celli], dt, dP, dE);
-        this->addExchange(celli, dP, dE);
+        const auto& inCell = occupancy[celli];
+        if (!inCell.empty())
+        {
+            actOnCell
+            (
+                celli,
+                SubList<parcelType*>(parcels, end - start, start),
+                inCell,
+                Wg,
+                dt
+            );
+        }
     }
 }
 

@@ -46,12 +46,30 @@ inline const dictionary& checkedCoeffs
 }
 
 
-//- valid and randomSeed
-inline wordList withSeed(const wordList& valid)
+//- valid and the keywords every two-way model reads
+inline wordList withCommon(const wordList& valid)
 {
     wordList all(valid);
     all.append("randomSeed");
+    all.append("maxCollisionsPerStep");
     return all;
+}
+
+
+//- An optional scalar of coeffs that must be > 0 (and finite)
+inline scalar positiveOrDefault
+(
+    const dictionary& coeffs,
+    const word& keyword,
+    const scalar deflt
+)
+{
+    const scalar value = coeffs.getOrDefault<scalar>(keyword, deflt);
+    if (!(value > 0 && std::isfinite(value)))
+    {
+        inputChecks::outOfRange(coeffs, keyword, value, "(0, inf)");
+    }
+    return value;
 }
 
 
@@ -188,13 +206,35 @@ void Foam::TwoWayCoupling<CloudType>::reemit(gasParcel& g, const partner& s)
 
 
 template<class CloudType>
+void Foam::TwoWayCoupling<CloudType>::startStep(const gasCloud& gas)
+{
+    if (mass_.empty())
+    {
+        const auto& props = gas.constProps();
+        mass_.setSize(props.size());
+        zeta_.setSize(props.size());
+        forAll(props, typei)
+        {
+            mass_[typei] = props[typei].mass();
+            zeta_[typei] = props[typei].internalDegreesOfFreedom();
+        }
+    }
+
+    Wg_ = gas.nParticle();
+    gasAxisymmetric_ = &gas.axisymmetric();
+    gained_ = gasGain();
+    counts_ = stepCounts();
+    subCycled_ = false;
+}
+
+
+template<class CloudType>
 Foam::label Foam::TwoWayCoupling<CloudType>::collideCell
 (
     const label celli,
     const UList<gasParcel*>& inCell,
     const UList<partner>& partners,
-    const scalar dt,
-    label& nAccepted
+    const scalar dt
 )
 {
     const label Ng = inCell.size();
@@ -211,7 +251,9 @@ Foam::label Foam::TwoWayCoupling<CloudType>::collideCell
       + remainder_[celli];
     const label nCandidates = label(candidates);
     remainder_[celli] = candidates - nCandidates;
+    counts_.candidates += nCandidates;
 
+    label nAccepted = 0;
     for (label i = 0; i < nCandidates; ++i)
     {
         gasParcel& g = *inCell[rnd_.position<label>(0, Ng - 1)];
@@ -243,7 +285,33 @@ Foam::label Foam::TwoWayCoupling<CloudType>::collideCell
         }
     }
 
-    return nCandidates;
+    counts_.collisions += nAccepted;
+    return nAccepted;
+}
+
+
+template<class CloudType>
+Foam::label Foam::TwoWayCoupling<CloudType>::subSteps
+(
+    const label celli,
+    const UList<gasParcel*>& inCell,
+    const UList<partner>& partners,
+    const scalar dt
+) const
+{
+    scalar rateMax = 0;
+    for (const gasParcel* g : inCell)
+    {
+        scalar rate = 0;
+        for (const partner& s : partners)
+        {
+            rate += s.W*s.sigma*mag(g->U() - s.U);
+        }
+        rateMax = max(rateMax, rate);
+    }
+
+    const scalar x = rateMax*dt/this->owner().mesh().V()[celli];
+    return max(label(1), label(std::ceil(x/maxCollisionsPerStep_)));
 }
 
 
@@ -265,8 +333,49 @@ Foam::TwoWayCoupling<CloudType>::partnerOf(const parcelType& p)
 
 
 template<class CloudType>
+void Foam::TwoWayCoupling<CloudType>::actOnCell
+(
+    const label celli,
+    const UList<parcelType*>& parcels,
+    const UList<gasParcel*>& inCell,
+    const scalar Wg,
+    const scalar dt
+)
+{
+    const auto& partners = partners_[celli];
+    const label n =
+        partners.empty() ? 1 : subSteps(celli, inCell, partners, dt);
+
+    if (n == 1)
+    {
+        OneWayCoupling<CloudType>::actOnCell(celli, parcels, inCell, Wg, dt);
+        return;
+    }
+
+    // Grains and gas of this cell in turn, n times over dt/n
+    label nAccepted = 0;
+    for (label i = 0; i < n; ++i)
+    {
+        OneWayCoupling<CloudType>::actOnCell
+        (
+            celli, parcels, inCell, Wg, dt/n
+        );
+        nAccepted += collideCell(celli, inCell, partners, dt/n);
+    }
+
+    subCycled_[celli] = true;
+    ++counts_.subCycledCells;
+    counts_.subStepsMax = max(counts_.subStepsMax, n);
+    counts_.probabilityMax =
+        max(counts_.probabilityMax, scalar(nAccepted)/inCell.size());
+}
+
+
+template<class CloudType>
 void Foam::TwoWayCoupling<CloudType>::parcelForcesAndHeat(gasCloud* gas)
 {
+    startStep(*gas);
+
     for (auto& list : partners_)
     {
         list.clear();
@@ -295,7 +404,7 @@ Foam::TwoWayCoupling<CloudType>::TwoWayCoupling
         (
             TwoWayCouplingTools::checkedCoeffs
             (
-                dict, type, TwoWayCouplingTools::withSeed(valid)
+                dict, type, TwoWayCouplingTools::withCommon(valid)
             ),
             "randomSeed", 0, 0, 2000
         )
@@ -303,6 +412,19 @@ Foam::TwoWayCoupling<CloudType>::TwoWayCoupling
     ),
     sigmaCrMax_(owner.mesh().nCells(), Zero),
     remainder_(owner.mesh().nCells(), Zero),
+    maxCollisionsPerStep_
+    (
+        TwoWayCouplingTools::positiveOrDefault
+        (
+            TwoWayCouplingTools::checkedCoeffs
+            (
+                dict, type, TwoWayCouplingTools::withCommon(valid)
+            ),
+            "maxCollisionsPerStep", 0.1
+        )
+    ),
+    subCycled_(owner.mesh().nCells(), false),
+    counts_(),
     nCollisionsTotal_(0),
     Wg_(0),
     gasAxisymmetric_(nullptr),
@@ -318,49 +440,32 @@ Foam::TwoWayCoupling<CloudType>::TwoWayCoupling
 template<class CloudType>
 void Foam::TwoWayCoupling<CloudType>::coupleGas(gasCloud& gas)
 {
-    if (mass_.empty())
-    {
-        const auto& props = gas.constProps();
-        mass_.setSize(props.size());
-        zeta_.setSize(props.size());
-        forAll(props, typei)
-        {
-            mass_[typei] = props[typei].mass();
-            zeta_[typei] = props[typei].internalDegreesOfFreedom();
-        }
-    }
-
     const scalar dt = this->owner().db().time().deltaTValue();
     const auto& occupancy = gas.cellOccupancy();
-    Wg_ = gas.nParticle();
-    gasAxisymmetric_ = &gas.axisymmetric();
-    gained_ = gasGain();
 
-    label nCandidates = 0;
-    label nCollisions = 0;
-    scalar probabilityMax = 0;
     forAll(partners_, celli)
     {
         const auto& partners = partners_[celli];
         const auto& inCell = occupancy[celli];
-        if (partners.empty() || inCell.empty())
+        if (partners.empty() || inCell.empty() || subCycled_[celli])
         {
             continue;
         }
 
-        label nAccepted = 0;
-        nCandidates += collideCell(celli, inCell, partners, dt, nAccepted);
-        nCollisions += nAccepted;
-        probabilityMax =
-            max(probabilityMax, scalar(nAccepted)/inCell.size());
+        const label nAccepted = collideCell(celli, inCell, partners, dt);
+        counts_.probabilityMax =
+            max(counts_.probabilityMax, scalar(nAccepted)/inCell.size());
     }
-    nCollisionsTotal_ += nCollisions;
+    nCollisionsTotal_ += counts_.collisions;
 
+    stepCounts all(counts_);
     scalar total = nCollisionsTotal_;
-    reduce(nCandidates, sumOp<label>());
-    reduce(nCollisions, sumOp<label>());
+    reduce(all.candidates, sumOp<label>());
+    reduce(all.collisions, sumOp<label>());
     reduce(total, sumOp<scalar>());
-    reduce(probabilityMax, maxOp<scalar>());
+    reduce(all.probabilityMax, maxOp<scalar>());
+    reduce(all.subCycledCells, sumOp<label>());
+    reduce(all.subStepsMax, maxOp<label>());
 
     reduce(gained_.momentum, sumOp<vector>());
     reduce(gained_.energy, sumOp<scalar>());
@@ -368,8 +473,10 @@ void Foam::TwoWayCoupling<CloudType>::coupleGas(gasCloud& gas)
     reduce(gained_.energySqr, sumOp<scalar>());
 
     Info<< "    Gas-grain candidates, collisions, since start,"
-        << " largest probability = " << nCandidates << ' ' << nCollisions
-        << ' ' << total << ' ' << probabilityMax << nl
+        << " largest probability = " << all.candidates << ' '
+        << all.collisions << ' ' << total << ' ' << all.probabilityMax << nl
+        << "    Gas-grain sub-cycled cells, largest sub-steps = "
+        << all.subCycledCells << ' ' << all.subStepsMax << nl
         << "    Gas gain from grains: momentum, energy, sums of squares = "
         << gained_.momentum << ' ' << gained_.energy << ' '
         << gained_.momentumSqr << ' ' << gained_.energySqr << nl;
