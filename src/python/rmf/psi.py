@@ -40,16 +40,27 @@ Observables, each a function of this module:
    rim raised above it); the crater depth is max over the annuli of d(r).
 2. Shock standoff (shock_standoff).  Gas density (the first written of
    rhoNMean, rhoN, rhoMMean, rhoM) along the axis: in each column of
-   cells (equal x) the one nearest the axis, if within nozzleRadius/4;
-   smoothed by a 3-cell running mean.  Jet density: the minimum of the smoothed
-   profile upstream of the surface; post-shock density: the median of the
-   smoothed profile between that minimum and the surface.  The shock is
-   where the profile first rises through their midpoint after the minimum
-   (linear between cells); the standoff is X_s - x_shock.  No shock when
-   the post-shock density is below 1.5 times the jet density: a thick,
-   diffuse shock layer with no plateau (the density rising steadily to the
-   cold wall, as in tutorials/gas/impingingStream) is reported as none;
-   axis_density.png shows the profile and the shock found.
+   cells (equal x) the mean of the cells within nozzleRadius/8 of the axis
+   weighted by radius (4 rows in the demo; the nearest cell when none is
+   that close; columns whose nearest cell is beyond nozzleRadius/4 are
+   left out), smoothed by a 3-cell running mean.  The tutorial's rhoNMean
+   is a batch mean over the steps since the previous write (fieldAverage
+   restartOnOutput; without it, a mean since the start of the run: a note
+   says which); rhoN is one step's simulators.  Search region: from the
+   nozzle exit (x = 0) to the stagnation peak, the largest density in the
+   half of the gap next to the surface (the wall, or the top of a dust
+   layer that holds the gas off it).  Shock layer: the run of cells ending
+   at the peak whose density is at least 1.5 times the jet's (the minimum
+   of the region), dips shorter than 3 cells included; it must be 3 cells
+   long at least (a sustained rise), else no shock.  Jet density: the
+   minimum upstream of the layer; post-shock: the median over the layer.
+   The shock is where the profile first rises through their midpoint in
+   the layer (linear between cells); the standoff is X_s - x_shock.
+   Before (one axis row, the first crossing of the midpoint after the
+   global minimum) a dip of the jet's noise far upstream could be the
+   minimum and a later jet wiggle the crossing: standoffs of 8-17 mm on
+   the hybrid demo at some writes, against about 3 mm.  axis_density.png
+   shows the profile and the shock found.
 3. Ejection angle (ejection_angles).  Ejecta: parcels above the initial
    layer top (x < layerTop) moving away from the surface (U_x < 0).  Angle
    above the surface: atan2(-U_x, sqrt(U_y^2 + U_z^2)), 0 along the
@@ -95,8 +106,13 @@ CLOUD = "grains"
 SETTINGS = ("surface", "nozzleRadius", "layerTop", "layerRadius", "crossingRadius")
 SURFACE_FRACTION = 0.5          # dust slab taken while density >= 0.5 of initial
 SHOCK_RISE = 1.5                # post-shock over jet density needed for a shock
-AXIS_FRACTION = 0.25            # axis cells: first row, within 0.25 nozzleRadius
+AXIS_FRACTION = 0.25            # axis columns: first row within 0.25 nozzleRadius
+AXIS_BAND = 0.125               # rows within 0.125 nozzleRadius averaged
 SMOOTH_CELLS = 3                # running mean along the axis
+SHOCK_SUSTAIN = 3               # cells: the shock layer's length and longest dip
+JET_QUANTILE = 0.25             # jet level of the shock layer's threshold
+PEAK_REGION = 0.5               # stagnation peak sought in this fraction of the
+                                # nozzle-surface gap next to the surface
 SHELL = 0.5e-3                  # half width of the crossing shell [m]
 STAGNATION_HEIGHT = 5e-3        # stagnation region height without a shock [m]
 HISTOGRAM_TIMES = 4             # default number of times in the histograms
@@ -291,17 +307,21 @@ def surface_profile(p, reference, settings, dr=None, dx=None,
                 max_depth=float(depth[i]), r_max=float(centres[i]), layer=H)
 
 
-def axis_profile(x, r, values, cap):
+def axis_profile(x, r, values, cap, band=0.0):
     """Values along the axis: in each column of cell centres (equal x to
-    1 nm) the cell(s) nearest the axis, when within cap of it (graded or
-    multi-block meshes keep their own first row): (x, values) sorted by x."""
+    1 nm) the mean of the cells within `band` of the axis, weighted by
+    their radius (a wedge cell's volume on a uniform radial spacing), or of
+    the cell(s) nearest the axis when none is within band; columns whose
+    nearest cell is beyond cap are left out (graded or multi-block meshes
+    keep their own first rows): (x, values) sorted by x."""
     xs = np.round(x, 9)
     unique, index = np.unique(xs, return_inverse=True)
     first = np.full(len(unique), np.inf)
     np.minimum.at(first, index, r)
-    near = (r <= first[index] + 1e-9) & (first[index] <= cap)
+    near = ((r <= first[index] + 1e-9) | (r <= band)) & (first[index] <= cap)
     keep, index = np.unique(index[near], return_inverse=True)
-    mean = np.bincount(index, weights=values[near])/np.bincount(index)
+    w = np.maximum(r[near], 1e-300)
+    mean = np.bincount(index, weights=w*values[near])/np.bincount(index, weights=w)
     return unique[keep], mean
 
 
@@ -310,32 +330,55 @@ def _running_mean(v, cells):
     return np.convolve(v, kernel, "same")/np.convolve(np.ones_like(v), kernel, "same")
 
 
-def shock_standoff(x, rho, surface, smooth=SMOOTH_CELLS, rise=SHOCK_RISE):
+def _layer_start(s, level, sustain):
+    """First index of the run of cells ending at the last one where
+    s >= level, dips below level shorter than `sustain` cells included;
+    len(s) when the last cell is below level."""
+    k, below = len(s), 0
+    for i in range(len(s) - 1, -1, -1):
+        if s[i] >= level:
+            k, below = i, 0
+        else:
+            below += 1
+            if below >= sustain or k == len(s):
+                break
+    return k
+
+
+def shock_standoff(x, rho, surface, smooth=SMOOTH_CELLS, rise=SHOCK_RISE,
+                   sustain=SHOCK_SUSTAIN):
     """Normal-shock standoff on the axis (module docstring, item 2).
 
-    x, rho: the axis profile (sorted by x).  Returns dict(standoff,
-    x_shock, rho_jet, rho_post, smooth [the smoothed profile]) or, when
-    no shock is found, dict(standoff=None, note=why).
+    x, rho: the axis profile (sorted by x; the cells between the nozzle
+    exit x = 0 and the surface are searched).  Returns dict(standoff,
+    x_shock, rho_jet, rho_post, x_peak, smooth [the smoothed profile], x)
+    or, when no shock is found, dict(standoff=None, note=why).
     """
-    upstream = x < surface
-    x, rho = x[upstream], rho[upstream]
-    if len(x) < 4:
+    inside = (x >= 0) & (x < surface)
+    x, rho = x[inside], rho[inside]
+    if len(x) < 2*sustain:
         return dict(standoff=None, note=f"{len(x)} axis cells: too few for a shock")
     s = _running_mean(rho, smooth)
-    i = int(np.argmin(s))
-    jet = s[i]
-    if i >= len(s) - 2:
-        return dict(standoff=None, note="density falls all the way to the surface")
-    post = float(np.median(s[i + 1:]))
-    if not (post > 0 and post >= rise*jet):
+    # stagnation peak (the wall or the dust top): the largest density in the
+    # part of the gap next to the surface (the exit may be denser)
+    near = np.nonzero(x >= (1 - PEAK_REGION)*surface)[0]
+    if len(near) == 0 or near[0] < sustain:
+        return dict(standoff=None, note=f"{len(near)} axis cells near the surface")
+    peak = int(near[np.argmax(s[near])])
+    jet = float(np.quantile(s[:peak + 1], JET_QUANTILE))  # typical jet, not a dip
+    k = _layer_start(s[:peak + 1], rise*jet, sustain)
+    if not jet > 0 or peak + 1 - k < sustain or k == 0:
         return dict(standoff=None,
-                    note=f"no rise to {rise} x the jet density after its minimum "
-                         f"(jet {jet:.3g}, downstream median {post:.3g})")
+                    note=f"no rise to {rise} x the jet density ({jet:.3g}) sustained "
+                         f"over {sustain} cells up to the stagnation peak at "
+                         f"x = {1e3*x[peak]:.3g} mm")
+    jet, post = float(s[:k].min()), float(np.median(s[k:peak + 1]))
     mid = 0.5*(jet + post)
-    k = i + 1 + int(np.nonzero(s[i + 1:] >= mid)[0][0])
-    x_shock = x[k - 1] + (mid - s[k - 1])*(x[k] - x[k - 1])/(s[k] - s[k - 1])
+    j = k + int(np.nonzero(s[k:peak + 1] >= mid)[0][0])
+    f = (mid - s[j - 1])/(s[j] - s[j - 1]) if s[j] != s[j - 1] else 0.5
+    x_shock = x[j - 1] + min(max(f, 0.0), 1.0)*(x[j] - x[j - 1])
     return dict(standoff=float(surface - x_shock), x_shock=float(x_shock),
-                rho_jet=float(jet), rho_post=post, smooth=s, x=x)
+                rho_jet=jet, rho_post=post, x_peak=float(x[peak]), smooth=s, x=x)
 
 
 def ejecta(p, settings):
@@ -458,7 +501,7 @@ def analyse(case, dr=None, dx=None, shell=SHELL, radial_weight=None):
     times [rows], notes, reference time)."""
     settings = read_settings(case)
     cells = mesh(case)
-    rows, notes, reference = [], [], None
+    rows, notes, reference, averaged = [], [], None, set()
     for t in foam.times(case):
         row = dict(time=t, t=float(t))
         p = parcels(case, t, radial_weight=radial_weight)
@@ -491,10 +534,14 @@ def analyse(case, dr=None, dx=None, shell=SHELL, radial_weight=None):
             row["shock"] = None
         else:
             x, values = axis_profile(cells["x"], cells["r"], rho,
-                                     AXIS_FRACTION*settings["nozzleRadius"])
+                                     AXIS_FRACTION*settings["nozzleRadius"],
+                                     AXIS_BAND*settings["nozzleRadius"])
             row["axis"] = (x, values)
             row["shock"] = shock_standoff(x, values, settings["surface"])
             row["shock"]["field"] = name
+            if name not in averaged:
+                averaged.add(name)
+                notes.append(density_note(case, name))
             if row["shock"]["standoff"] is None:
                 notes.append(f"t = {t}: no shock on the axis ({row['shock']['note']})")
         row["alpha"] = max_alpha(field(case, t, "alpha." + CLOUD, cells["n"]))
@@ -518,6 +565,26 @@ def analyse(case, dr=None, dx=None, shell=SHELL, radial_weight=None):
                 reference=reference[0] if reference else None,
                 options=dict(dr=dr, dx=dx, shell=shell, radial_weight=radial_weight),
                 polygons=meridian_cells(case) if cells["n"] <= MAX_POLYGONS else None)
+
+
+def density_note(case, name):
+    """What the density field of the shock is: a fieldAverage mean is over
+    the steps since the previous write when system/controlDict sets
+    restartOnOutput (the tutorial's batch means), else since the start of
+    the run (a cumulative mean: the standoff of the time-averaged flow)."""
+    if not name.endswith("Mean"):
+        return (f"shock from {name}: one step's simulators (no time average "
+                "written: noisy)")
+    try:
+        with open(os.path.join(case, "system", "controlDict")) as f:
+            text = re.sub(r"//[^\n]*", " ", f.read())
+    except OSError:
+        text = ""
+    if re.search(r"restartOnOutput\s+(true|on|yes)\s*;", text):
+        return (f"shock from {name}: batch mean over the steps since the previous "
+                "write (fieldAverage restartOnOutput)")
+    return (f"shock from {name}: mean since the start of the run (fieldAverage "
+            "without restartOnOutput: the standoff of the time-averaged flow)")
 
 
 def _get(row, key, sub):
@@ -654,11 +721,14 @@ def definitions(analysis):
         f"{SURFACE_FRACTION} of the initial density (included), over the initial "
         f"density (time {analysis['reference']} s); depth = H - thickness, "
         f"H = X_s - layerTop = {1e3*H:.3g} mm; crater depth = max over the annuli.",
-        "- Shock: per x, the cell nearest the axis (within "
-        f"{AXIS_FRACTION} nozzleRadius), "
-        f"{SMOOTH_CELLS}-cell running mean of the first of {', '.join(DENSITIES)}; where it rises "
-        "through the midpoint of the jet minimum and the median downstream of it; "
-        f"none below a {SHOCK_RISE}x rise; standoff = X_s - x_shock.",
+        f"- Shock: per x, the radius-weighted mean of the cells within {AXIS_BAND} "
+        f"nozzleRadius of the axis (the nearest one if none; columns beyond {AXIS_FRACTION} "
+        f"nozzleRadius left out), {SMOOTH_CELLS}-cell running mean of the first of "
+        f"{', '.join(DENSITIES)}; stagnation peak: the maximum in the {PEAK_REGION:g} of "
+        f"the gap next to the surface; shock layer: the cells ending at the peak above "
+        f"{SHOCK_RISE}x the jet minimum (dips < {SHOCK_SUSTAIN} cells; at least "
+        f"{SHOCK_SUSTAIN} cells, else no shock); shock where the profile rises through "
+        "the midpoint of the jet minimum and the layer's median; standoff = X_s - x_shock.",
         "- Ejecta: parcels with x < layerTop and U_x < 0; ejection angle = "
         "atan2(-U_x, sqrt(U_y^2 + U_z^2)) above the surface.",
         f"- Crossing: real grains within {1e3*o['shell']:g} mm of r = "
