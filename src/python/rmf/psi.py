@@ -3,7 +3,8 @@
     /usr/bin/python3 -m rmf.psi CASE [--output DIR] [--times T ...]
     /usr/bin/python3 -m rmf.psi --compare CASE1 CASE2 ... [--labels L ...]
                                 [--output DIR]
-    options: --dr M, --dx M (crater bins), --shell M (crossing shell half
+    options: --dr M (crater annuli before merging), --dx M (slabs of the
+    dense layer), --shell M (crossing shell half
     width), --radial-weight W R (parcels weighted implicitly by radius)
 
 The first form writes PNGs and summary.md to DIR (default CASE/observables);
@@ -24,20 +25,36 @@ for nParticle real grains: every statistic below is weighted by it
 ("real grains"), the ejection angle by mass (nParticle d^3).
 
 Observables, each a function of this module:
-1. Crater (surface_profile).  Parcels are binned in annuli of width dr
-   (0 to layerRadius) and, in each annulus, in slabs of height dx stacked
-   from the wall (x = X_s) up.  The reference density of an annulus is its
-   real grains inside the initial layer [layerTop, X_s] at the reference
-   time (the first written time with parcels), spread over the layer's
-   height H = X_s - layerTop.  Going up from the wall, slabs are taken
-   while their density is at least `fraction` (0.5) of the reference; the
-   first slab below it is the last one taken.  The dust thickness is the
-   taken real grains over the reference density (the height the dust would
-   fill at its initial packing: exact for a sharp surface anywhere inside
-   a slab, insensitive to dilute ejecta above the surface).  Surface height
-   above the wall h(r) = thickness; crater depth d(r) = H - h(r) (how far
-   the surface has receded below the initial layer top; negative: a
-   rim raised above it); the crater depth is max over the annuli of d(r).
+1. Crater (surface_profile).  Annuli of width dr (default nozzleRadius/8)
+   from the axis to layerRadius, merged outward until each holds 100
+   parcels of the reference layer (the parcels in [layerTop, X_s] at the
+   reference time, the first written time with parcels; an outer
+   remainder joins the annulus inside it; a layer of fewer than 100
+   parcels is not measurable).  In each annulus (its column of dust):
+   - dense layer: slabs of height H/n stacked from the wall (n = the
+     annulus's reference parcels / 20, 2 to 10; --dx sets the height),
+     taken up to the first of two slabs in a row whose real grains are
+     below 0.5 of the reference density (that slab included): dilute
+     ejecta above the surface do not count;
+   - surface height h = Q_0.9/0.9, Q_0.9 the real-grain-weighted 0.9
+     quantile of the dense layer's heights above the wall (X_s - x):
+     exact for a column of uniform density of any height, so a layer
+     compacted (same grains, thinner) reads lower.  Its noise sigma =
+     h sqrt(0.9 x 0.1/N_eff)/0.9 (the quantile's sampling error, N_eff =
+     (sum w)^2/sum w^2 of the dense grains; 0.027 mm for 100 parcels in
+     a 1 mm layer); a column with no dense grain has h = 0 (bare wall);
+   - surface drop d(r) = H - h (H = X_s - layerTop: how far the surface
+     is below the initial top; negative: a rim);
+   - eroded fraction: 1 - the dense layer's real grains over the
+     annulus's reference real grains (0 for compaction alone; grains
+     moved to another annulus count too, negative when gained).
+   Reported: the surface drop on the axis (the first annulus) +- its
+   sigma; the crater depth, the largest d(r) among the annuli deeper than
+   3 sigma (0 +- the median sigma when none is: with ~40 annuli of noise
+   a plain max would read about 2.5 sigma, the old 0.97 mm at t = 0 of
+   the 5000-parcel demo), its annulus (at r) and the crater radius where
+   d(r) falls to half of it outward (linear between annulus centres);
+   the eroded fraction of the axis annulus and of the whole layer.
 2. Shock standoff (shock_standoff).  Gas density (the first written of
    rhoNMean, rhoN, rhoMMean, rhoM) along the axis: in each column of
    cells (equal x) the mean of the cells within nozzleRadius/8 of the axis
@@ -104,7 +121,11 @@ from rmf import foam
 
 CLOUD = "grains"
 SETTINGS = ("surface", "nozzleRadius", "layerTop", "layerRadius", "crossingRadius")
-SURFACE_FRACTION = 0.5          # dust slab taken while density >= 0.5 of initial
+SURFACE_QUANTILE = 0.9          # surface height: this real-grain quantile / itself
+SURFACE_FRACTION = 0.5          # dense layer: ends at two slabs below 0.5 x initial
+MIN_PARCELS = 100               # reference parcels an annulus needs (merged out to it)
+SLAB_PARCELS = 20               # reference parcels per slab (2 to 10 slabs)
+SIGNIFICANCE = 3                # crater depth: annuli whose drop has z > 3
 SHOCK_RISE = 1.5                # post-shock over jet density needed for a shock
 AXIS_FRACTION = 0.25            # axis columns: first row within 0.25 nozzleRadius
 AXIS_BAND = 0.125               # rows within 0.125 nozzleRadius averaged
@@ -249,62 +270,144 @@ def field(case, time, name, ncells):
 
 # ------------------------------------------------------- observables ----
 
-def _bins(settings, dr, dx):
-    X_s, R = settings["surface"], settings["layerRadius"]
-    H = X_s - settings["layerTop"]
+def annuli(reference, settings, dr=None, min_parcels=MIN_PARCELS):
+    """Annulus edges of the crater: annuli of width dr (default
+    nozzleRadius/8) from the axis to layerRadius, merged outward until each
+    holds min_parcels parcels of the reference layer (a remainder below it
+    joins the annulus inside it).  Returns (edges, reference parcels per
+    annulus); a single annulus below min_parcels is not measurable."""
+    R = settings["layerRadius"]
     dr = dr or settings["nozzleRadius"]/8
-    dx = dx or H/10
-    nr = max(1, int(round(R/dr)))
-    nx = int(math.ceil(X_s/dx))
-    return np.linspace(0, R, nr + 1), dx, nx, H
+    fine = np.linspace(0, R, max(1, int(round(R/dr))) + 1)
+    counts, _ = np.histogram(radius(reference["pos"]), fine)
+    edges, held = [0.0], []
+    total = 0
+    for j, c in enumerate(counts):
+        total += c
+        if total >= min_parcels:
+            edges.append(fine[j + 1])
+            held.append(total)
+            total = 0
+    if total or len(edges) == 1:
+        if len(edges) > 1:
+            edges[-1] = fine[-1]
+            held[-1] += total
+        else:
+            edges.append(fine[-1])
+            held.append(total)
+    return np.array(edges), np.array(held)
 
 
-def _slab_counts(p, settings, r_edges, dx, nx):
-    """Real grains per (slab from the wall, annulus)."""
-    X_s = settings["surface"]
-    k = np.floor((X_s - p["pos"][:, 0])/dx).astype(int)
-    k[(k == -1)] = 0                     # on the wall within a slab
-    j = np.searchsorted(r_edges, radius(p["pos"]), side="right") - 1
-    keep = (k >= 0) & (k < nx) & (j >= 0) & (j < len(r_edges) - 1)
-    counts = np.zeros((nx, len(r_edges) - 1))
-    np.add.at(counts, (k[keep], j[keep]), p["n"][keep])
-    return counts
+def weighted_quantile(values, weights, q):
+    """Quantile q of values with weights: linear between the midpoints of
+    the sorted values' cumulative weights (exact for a lattice)."""
+    order = np.argsort(values)
+    v, w = values[order], weights[order]
+    c = (np.cumsum(w) - 0.5*w)/w.sum()
+    return float(np.interp(q, c, v))
 
 
-def surface_profile(p, reference, settings, dr=None, dx=None,
-                    fraction=SURFACE_FRACTION):
-    """Dust surface and crater depth against r (module docstring, item 1).
+def _in_layer(p, settings):
+    X_s, top = settings["surface"], settings["layerTop"]
+    x = p["pos"][:, 0]
+    keep = (x >= top - 1e-9*X_s) & (x <= X_s + 1e-9*X_s) & \
+        (radius(p["pos"]) <= settings["layerRadius"])
+    return dict(pos=p["pos"][keep], n=p["n"][keep])
+
+
+def surface_profile(p, reference, settings, dr=None, dx=None, quantile=SURFACE_QUANTILE,
+                    fraction=SURFACE_FRACTION, min_parcels=MIN_PARCELS,
+                    significance=SIGNIFICANCE):
+    """Dust surface, surface drop, crater depth and eroded fraction against
+    r (module docstring, item 1).
 
     p, reference: parcels now and at the reference time (dicts of
-    `parcels`).  dr: annulus width (default nozzleRadius/8); dx: slab height
-    (default a tenth of the layer).  Returns dict(r_edges, r [annulus
-    centres], height [surface height above the wall], depth [H - height],
-    max_depth, r_max [centre of the deepest annulus]); annuli with no
-    reference grains hold NaN in the arrays and are left out of the max.
+    `parcels`).  dr: width of the annuli before merging (`annuli`); dx:
+    slab height of the density criterion (default: the layer over
+    reference parcels / SLAB_PARCELS slabs, 2 to 10).  Returns dict(r_edges,
+    r [annulus centres], parcels [reference parcels per annulus], height
+    [surface height above the wall], sigma [its noise], depth [H - height],
+    eroded [fraction of the annulus's reference real grains not in its
+    dense layer], surface_drop, surface_drop_sigma [the axis annulus],
+    max_depth, max_depth_sigma, r_max [the deepest annulus whose drop is
+    significant, z > `significance`; 0, the median sigma and None when
+    none is],
+    radius [half-depth radius, or None], eroded_axis, eroded_layer, layer
+    [H], z [significance of the drop, see below]); annuli not measurable (fewer than min_parcels reference parcels)
+    hold NaN.
     """
-    r_edges, dx, nx, H = _bins(settings, dr, dx)
-    X_s, top = settings["surface"], settings["layerTop"]
-    in_layer = (reference["pos"][:, 0] >= top - 1e-9*X_s) & \
-        (reference["pos"][:, 0] <= X_s + 1e-9*X_s)
-    ref = dict(pos=reference["pos"][in_layer], n=reference["n"][in_layer])
-    column = _slab_counts(ref, settings, r_edges, dx, nx).sum(axis=0)
-    slab0 = column*dx/H                   # reference real grains per slab
-    counts = _slab_counts(p, settings, r_edges, dx, nx)
-    height = np.full(len(column), np.nan)
-    for j in np.nonzero(column > 0)[0]:
-        ratio = counts[:, j]/slab0[j]
-        below = np.nonzero(ratio < fraction)[0]
-        last = below[0] if len(below) else nx - 1
-        height[j] = ratio[:last + 1].sum()*dx
-    depth = H - height
-    valid = np.isfinite(depth)
-    if not valid.any():
+    X_s, H = settings["surface"], settings["surface"] - settings["layerTop"]
+    ref = _in_layer(reference, settings)
+    if len(ref["n"]) == 0:
         raise ValueError("surface_profile: no reference grain in the layer "
-                         f"[{top}, {X_s}] within r <= {r_edges[-1]}")
-    i = np.nanargmax(depth)
-    centres = 0.5*(r_edges[1:] + r_edges[:-1])
-    return dict(r_edges=r_edges, r=centres, height=height, depth=depth,
-                max_depth=float(depth[i]), r_max=float(centres[i]), layer=H)
+                         f"[{settings['layerTop']}, {X_s}] within r <= "
+                         f"{settings['layerRadius']}")
+    edges, held = annuli(ref, settings, dr, min_parcels)
+    m = len(held)
+    j_ref = np.searchsorted(edges, radius(ref["pos"]), side="right") - 1
+    ref_grains = np.bincount(np.clip(j_ref, 0, m - 1), weights=ref["n"], minlength=m)
+    h_all = X_s - p["pos"][:, 0]
+    j_all = np.searchsorted(edges, radius(p["pos"]), side="right") - 1
+    height, sigma, dense_grains, n_eff = (np.full(m, np.nan) for _ in range(4))
+    for j in range(m):
+        if held[j] < min_parcels:
+            continue
+        slabs = int(min(10, max(2, held[j]//SLAB_PARCELS)))
+        step = dx or H/slabs
+        sel = (j_all == j) & (h_all >= -1e-9*X_s) & (h_all <= X_s)
+        h, w = np.maximum(h_all[sel], 0.0), p["n"][sel]
+        k = np.minimum((h/step).astype(int), int(X_s/step))
+        per_slab = ref_grains[j]*step/H
+        counts = np.bincount(k, weights=w, minlength=int(X_s/step) + 2)
+        low = counts < fraction*per_slab
+        run = np.nonzero(low[:-1] & low[1:])[0]          # two slabs in a row
+        top = run[0] if len(run) else len(counts) - 1    # first of them included
+        dense = k <= top
+        dense_grains[j] = w[dense].sum()
+        if not dense.any():
+            height[j], sigma[j] = 0.0, 0.0               # bare wall
+            continue
+        hq = weighted_quantile(h[dense], w[dense], quantile)
+        n_eff[j] = w[dense].sum()**2/np.sum(w[dense]**2)
+        height[j] = hq/quantile
+        sigma[j] = height[j]*math.sqrt(quantile*(1 - quantile)/n_eff[j])/quantile
+    depth = H - height
+    # significance of a drop: were the surface still at H, the dense grains
+    # below the measured quantile would be Binomial(N_eff, p0 = q h/H);
+    # z = how many of its sd q N_eff lies above its mean
+    with np.errstate(invalid="ignore", divide="ignore"):
+        p0 = np.clip(quantile*height/H, 1e-12, 1 - 1e-12)
+        z = np.where(height == 0, np.inf,
+                     (quantile - p0)*np.sqrt(n_eff/(p0*(1 - p0))))
+    eroded = 1 - dense_grains/ref_grains
+    centres = 0.5*(edges[1:] + edges[:-1])
+    ok = np.isfinite(depth)
+    out = dict(r_edges=edges, r=centres, parcels=held, height=height, sigma=sigma,
+               depth=depth, z=z, eroded=eroded, layer=H, surface_drop=None,
+               surface_drop_sigma=None, max_depth=None, max_depth_sigma=None,
+               r_max=None, radius=None, eroded_axis=None, eroded_layer=None)
+    if not ok.any():
+        return out
+    out.update(surface_drop=float(depth[0]) if ok[0] else None,
+               surface_drop_sigma=float(sigma[0]) if ok[0] else None,
+               eroded_axis=float(eroded[0]) if ok[0] else None,
+               eroded_layer=float(1 - np.nansum(dense_grains)/ref_grains[ok].sum()))
+    significant = ok & (np.where(ok, z, -np.inf) > significance)
+    if not significant.any():
+        out.update(max_depth=0.0, max_depth_sigma=float(np.median(sigma[ok])))
+        return out
+    i = int(np.nonzero(significant)[0][np.argmax(depth[significant])])
+    out.update(max_depth=float(depth[i]), max_depth_sigma=float(sigma[i]),
+               r_max=float(centres[i]))
+    half = 0.5*depth[i]
+    for k in range(i + 1, m):                        # out to half the depth
+        if not ok[k]:
+            break
+        if depth[k] <= half:
+            f = (depth[k - 1] - half)/(depth[k - 1] - depth[k])
+            out["radius"] = float(centres[k - 1] + f*(centres[k] - centres[k - 1]))
+            break
+    return out
 
 
 def axis_profile(x, r, values, cap, band=0.0):
@@ -596,8 +699,14 @@ def _get(row, key, sub):
 COLUMNS = (
     ("t [us]", None, None, 1e6, "{:.4g}"),
     ("real grains", "grains", None, 1, "{:.4g}"),
+    ("surface drop axis [mm]", "crater", "surface_drop", 1e3, "{:.3f}"),
+    ("+- [mm]", "crater", "surface_drop_sigma", 1e3, "{:.3f}"),
     ("crater depth [mm]", "crater", "max_depth", 1e3, "{:.3f}"),
+    ("+- [mm]", "crater", "max_depth_sigma", 1e3, "{:.3f}"),
     ("at r [mm]", "crater", "r_max", 1e3, "{:.2f}"),
+    ("crater radius [mm]", "crater", "radius", 1e3, "{:.2f}"),
+    ("eroded axis", "crater", "eroded_axis", 1, "{:.3f}"),
+    ("eroded layer", "crater", "eroded_layer", 1, "{:.4f}"),
     ("shock standoff [mm]", "shock", "standoff", 1e3, "{:.3f}"),
     ("ejection angle mean [deg]", "angles", "mean", 1, "{:.1f}"),
     ("median [deg]", "angles", "median", 1, "{:.1f}"),
@@ -664,10 +773,26 @@ def key_numbers(analysis):
         else:
             out.append(f"- {label}: {form.format(found[1]*scale)}{unit} at t = {found[0]} s")
 
-    at_last("Crater depth (max over r of the surface's recession below the initial "
-            f"layer top, H = {1e3*(s['surface'] - s['layerTop']):.3g} mm)",
-            "crater", "max_depth", 1e3, " mm", "{:.3f}")
+    H = 1e3*(s['surface'] - s['layerTop'])
+
+    def with_noise(label, sub, noise):
+        for r in reversed(rows):
+            v, e = value(r, "crater", sub), value(r, "crater", noise)
+            if v is not None and e is not None:
+                out.append(f"- {label}: {1e3*v:.3f} +- {1e3*e:.3f} mm at t = {r['time']} s")
+                return
+        out.append(f"- {label}: n/a (never available, see the notes)")
+
+    with_noise(f"Surface drop on the axis (the surface below the initial layer top, "
+               f"H = {H:.3g} mm, in the first annulus)", "surface_drop", "surface_drop_sigma")
+    with_noise(f"Crater depth (largest surface drop among the annuli deeper than "
+               f"{SIGNIFICANCE} sigma)", "max_depth", "max_depth_sigma")
     at_last("Radius of the deepest annulus", "crater", "r_max", 1e3, " mm", "{:.2f}")
+    at_last("Crater radius (half depth)", "crater", "radius", 1e3, " mm", "{:.2f}")
+    at_last("Eroded real-grain fraction, axis annulus", "crater", "eroded_axis", 1, "",
+            "{:.3f}")
+    at_last("Eroded real-grain fraction, whole layer", "crater", "eroded_layer", 1, "",
+            "{:.4f}")
     at_last("Shock standoff on the axis", "shock", "standoff", 1e3, " mm", "{:.3f}")
     standoffs = series(analysis, "shock", "standoff")
     if len(standoffs) > 1:
@@ -707,7 +832,11 @@ def key_numbers(analysis):
 def definitions(analysis):
     """Definitions of the observables with this run's bins and options."""
     s, o = analysis["settings"], analysis["options"]
-    r_edges, dx, _, H = _bins(s, o["dr"], o["dx"])
+    H = s["surface"] - s["layerTop"]
+    dr = o["dr"] or s["nozzleRadius"]/8
+    first = next((r["crater"] for r in analysis["rows"] if r.get("crater")), None)
+    merged = (f"{len(first['r'])} annuli, the first {1e3*first['r_edges'][1]:.3g} mm wide"
+              if first else "no annulus")
     weight = "nParticle"
     if o["radial_weight"]:
         W, R = o["radial_weight"]
@@ -715,12 +844,19 @@ def definitions(analysis):
     return [
         f"- Real grains of a parcel: {weight}; every statistic is weighted by them "
         "(ejection angle: by mass, real grains x d^3).",
-        f"- Crater: annuli of {1e3*(r_edges[1] - r_edges[0]):.3g} mm to r = "
-        f"{1e3*r_edges[-1]:.3g} mm, slabs of {1e3*dx:.3g} mm from the wall up; dust "
-        f"thickness = real grains of the slabs up to the first one below "
-        f"{SURFACE_FRACTION} of the initial density (included), over the initial "
-        f"density (time {analysis['reference']} s); depth = H - thickness, "
-        f"H = X_s - layerTop = {1e3*H:.3g} mm; crater depth = max over the annuli.",
+        f"- Crater: annuli of {1e3*dr:.3g} mm to r = {1e3*s['layerRadius']:.3g} mm merged "
+        f"outward to {MIN_PARCELS} parcels of the reference layer (time "
+        f"{analysis['reference']} s) each: {merged}; dense layer: slabs "
+        + (f"of {1e3*o['dx']:.3g} mm" if o["dx"] else
+           f"of H/n, n = reference parcels/{SLAB_PARCELS} (2 to 10),")
+        + f" up to the first of two in a row below {SURFACE_FRACTION} of the reference "
+        f"density (included); surface height h = Q_{SURFACE_QUANTILE}/{SURFACE_QUANTILE} of "
+        f"the dense grains' heights above the wall (real grains), noise sigma = "
+        f"h sqrt(q(1 - q)/N_eff)/q; surface drop = H - h, H = X_s - layerTop = "
+        f"{1e3*H:.3g} mm; crater depth = the largest drop among the annuli deeper than "
+        f"{SIGNIFICANCE} sigma (0 +- the median sigma if none); crater radius: where the "
+        "drop falls to half of it outward; eroded fraction = 1 - dense real grains / "
+        "reference real grains (axis annulus; whole layer).",
         f"- Shock: per x, the radius-weighted mean of the cells within {AXIS_BAND} "
         f"nozzleRadius of the axis (the nearest one if none; columns beyond {AXIS_FRACTION} "
         f"nozzleRadius left out), {SMOOTH_CELLS}-cell running mean of the first of "
@@ -778,11 +914,14 @@ def plot_crater(ax, analysis, rows, title=None):
         c = r.get("crater")
         if c is None:
             continue
-        ax.stairs(1e3*c["height"], 1e3*c["r_edges"], baseline=None,
-                  label=f"t = {r['time']} s")
+        line = ax.stairs(1e3*c["height"], 1e3*c["r_edges"], baseline=None,
+                         label=f"t = {r['time']} s")
+        ax.stairs(1e3*(c["height"] + c["sigma"]), 1e3*c["r_edges"],
+                  baseline=1e3*(c["height"] - c["sigma"]), fill=True, alpha=0.2,
+                  color=line.get_edgecolor())
     ax.axvline(1e3*s["nozzleRadius"], color="0.7", linestyle=":", label="nozzle radius")
     ax.set_xlabel("r [mm]")
-    ax.set_ylabel("dust surface height above the wall [mm]")
+    ax.set_ylabel("dust surface height above the wall [mm] (band: +- sigma)")
     ax.set_ylim(bottom=0)
     ax.grid(alpha=0.3)
     ax.legend(fontsize=7)
@@ -857,7 +996,8 @@ def plot_knp(ax, fig, analysis, row, title=None, span=None):
 
 
 TIMESERIES = (
-    ("crater depth [mm]", (("crater", "max_depth", 1e3, "max over r"),)),
+    ("crater [mm]", (("crater", "surface_drop", 1e3, "surface drop, axis"),
+                     ("crater", "max_depth", 1e3, "depth (max, > 3 sigma)"))),
     ("shock standoff [mm]", (("shock", "standoff", 1e3, "axis"),)),
     ("max alpha", (("alpha", "max", 1, "max alpha"),)),
     ("ejection angle [deg]", (("angles", "mean", 1, "mean"), ("angles", "median", 1, "median"))),
@@ -1112,8 +1252,8 @@ def main(argv=None):
     parser.add_argument("--labels", nargs="+")
     parser.add_argument("--output", help="directory for the PNGs and summary.md")
     parser.add_argument("--times", nargs="+", help="times of the profiles and histograms")
-    parser.add_argument("--dr", type=float, help="annulus width of the crater [m]")
-    parser.add_argument("--dx", type=float, help="slab height of the crater [m]")
+    parser.add_argument("--dr", type=float, help="crater annulus width before merging to 100 parcels [m]")
+    parser.add_argument("--dx", type=float, help="slab height of the crater's dense-layer criterion [m]")
     parser.add_argument("--shell", type=float, default=SHELL,
                         help="half width of the crossing shell [m]")
     parser.add_argument("--radial-weight", nargs=2, type=float, metavar=("W", "R"),
