@@ -642,7 +642,7 @@ def analyse(case, dr=None, dx=None, shell=SHELL, radial_weight=None):
             row["axis"] = (x, values)
             row["shock"] = shock_standoff(x, values, settings["surface"])
             row["shock"]["field"] = name
-            if name not in averaged:
+            if name not in averaged and (values > 0).any():
                 averaged.add(name)
                 notes.append(density_note(case, name))
             if row["shock"]["standoff"] is None:
@@ -1058,7 +1058,8 @@ def plot_case(analysis, output, wanted=None):
     if not shown:
         ax.text(0.5, 0.5, "no gas density written", ha="center", transform=ax.transAxes)
     ax.set_xlabel("height above the surface on the axis [mm] (dashed: shock)")
-    ax.set_ylabel(f"gas density ({shown[0]['shock']['field'] if shown else 'rhoN'}) "
+    ax.set_ylabel(f"gas density ({shown[-1]['shock']['field'] if shown else 'rhoN'}), "
+                  f"rows within {AXIS_BAND} nozzleRadius "
                   "[1/m^3 or kg/m^3]")
     ax.set_yscale("log")
     ax.grid(alpha=0.3)
