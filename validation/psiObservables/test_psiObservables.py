@@ -794,3 +794,28 @@ def test_sparse_layer_is_not_measurable():
     c = psi.surface_profile(ref, ref, DEMO)
     assert len(c["r"]) == 1 and np.isnan(c["height"]).all()
     assert c["surface_drop"] is None and c["max_depth"] is None
+
+
+@pytest.mark.parametrize("seed", range(20))
+def test_shock_from_the_demo_rows(seed):
+    """The demo's mesh near the axis: 80 columns of 0.25 mm, rows at r =
+    0.17, 0.39, 0.64, 0.89 and 1.15 mm (the demo's first rows), each cell
+    with 20 % noise of its own (a batch mean of ~25 simulators) and the
+    jet dip of test_shock_on_a_noisy_flat_jet.  The analysis's profile
+    (psi.axis_density: the rows within nozzleRadius/8 = 1.01 mm) finds the
+    standoff within one cell (0.25 mm; measured 2.81 to 3.06 mm over these
+    seeds); the first row alone (AXIS_BAND = 0) misses it for seed 12."""
+    rng = np.random.default_rng(seed)
+    rows = np.array([0.16871, 0.39366, 0.6411, 0.89175, 1.15])*1e-3
+    x = (np.arange(80) + 0.5)*X_S/80
+    xs, rs, values = [], [], []
+    for r in rows:
+        _, rho = demo_axis(rng, dip=(7e-3, 0.3))
+        xs.append(x), rs.append(np.full(80, r)), values.append(rho)
+    settings = dict(surface=X_S, nozzleRadius=R_NOZZLE)
+    xa, rho = psi.axis_density(np.concatenate(xs), np.concatenate(rs),
+                               np.concatenate(values), settings)
+    shock = psi.shock_standoff(xa, rho, X_S)
+    print(f"seed {seed}, demo rows: standoff {1e3*shock['standoff']:.3f} mm")
+    assert len(xa) == 80
+    assert abs(shock["standoff"] - 3e-3) < DEMO_SHOCK_TOL

@@ -428,6 +428,13 @@ def axis_profile(x, r, values, cap, band=0.0):
     return unique[keep], mean
 
 
+def axis_density(x, r, rho, settings):
+    """The axis profile of the shock (module docstring, item 2): rows
+    within AXIS_BAND nozzleRadius, columns within AXIS_FRACTION of it."""
+    return axis_profile(x, r, rho, AXIS_FRACTION*settings["nozzleRadius"],
+                        AXIS_BAND*settings["nozzleRadius"])
+
+
 def _running_mean(v, cells):
     kernel = np.ones(cells)
     return np.convolve(v, kernel, "same")/np.convolve(np.ones_like(v), kernel, "same")
@@ -636,9 +643,7 @@ def analyse(case, dr=None, dx=None, shell=SHELL, radial_weight=None):
             notes.append(f"t = {t}: no gas density ({', '.join(DENSITIES)}): shock n/a")
             row["shock"] = None
         else:
-            x, values = axis_profile(cells["x"], cells["r"], rho,
-                                     AXIS_FRACTION*settings["nozzleRadius"],
-                                     AXIS_BAND*settings["nozzleRadius"])
+            x, values = axis_density(cells["x"], cells["r"], rho, settings)
             row["axis"] = (x, values)
             row["shock"] = shock_standoff(x, values, settings["surface"])
             row["shock"]["field"] = name
