@@ -3,7 +3,8 @@
     /usr/bin/python3 -m rmf.psi CASE [--output DIR] [--times T ...]
     /usr/bin/python3 -m rmf.psi --compare CASE1 CASE2 ... [--labels L ...]
                                 [--output DIR]
-    options: --dr M, --dx M (crater bins), --shell M (crossing shell half
+    options: --dr M (crater annuli before merging), --dx M (slabs of the
+    dense layer), --shell M (crossing shell half
     width), --radial-weight W R (parcels weighted implicitly by radius)
 
 The first form writes PNGs and summary.md to DIR (default CASE/observables);
@@ -24,32 +25,69 @@ for nParticle real grains: every statistic below is weighted by it
 ("real grains"), the ejection angle by mass (nParticle d^3).
 
 Observables, each a function of this module:
-1. Crater (surface_profile).  Parcels are binned in annuli of width dr
-   (0 to layerRadius) and, in each annulus, in slabs of height dx stacked
-   from the wall (x = X_s) up.  The reference density of an annulus is its
-   real grains inside the initial layer [layerTop, X_s] at the reference
-   time (the first written time with parcels), spread over the layer's
-   height H = X_s - layerTop.  Going up from the wall, slabs are taken
-   while their density is at least `fraction` (0.5) of the reference; the
-   first slab below it is the last one taken.  The dust thickness is the
-   taken real grains over the reference density (the height the dust would
-   fill at its initial packing: exact for a sharp surface anywhere inside
-   a slab, insensitive to dilute ejecta above the surface).  Surface height
-   above the wall h(r) = thickness; crater depth d(r) = H - h(r) (how far
-   the surface has receded below the initial layer top; negative: a
-   rim raised above it); the crater depth is max over the annuli of d(r).
+1. Crater (surface_profile).  Annuli of width dr (default nozzleRadius/8)
+   from the axis to layerRadius, merged outward until each holds 100
+   parcels of the reference layer (the parcels in [layerTop, X_s] at the
+   reference time, the first written time with parcels; an outer
+   remainder joins the annulus inside it; a layer of fewer than 100
+   parcels is not measurable).  In each annulus (its column of dust):
+   - dense layer: slabs of height H/n stacked from the wall (n = the
+     annulus's reference parcels / 20, 2 to 10; --dx sets the height),
+     taken up to the first of two slabs in a row whose real grains are
+     below 0.5 of the reference density (that slab included): dilute
+     ejecta above the surface do not count;
+   - surface height h = Q_0.9/0.9, Q_0.9 the real-grain-weighted 0.9
+     quantile of the dense layer's heights above the wall (X_s - x):
+     exact for a column of uniform density of any height, so a layer
+     compacted (same grains, thinner) reads lower.  Its noise sigma =
+     h sqrt(0.9 x 0.1/N_eff)/0.9 (the quantile's sampling error, N_eff =
+     (sum w)^2/sum w^2 of the dense grains; 0.027 mm for 100 parcels in
+     a 1 mm layer); a column with no dense grain has h = 0 (bare wall);
+   - surface drop d(r) = H - h (H = X_s - layerTop: how far the surface
+     is below the initial top; negative: a rim);
+   - eroded fraction: 1 - the dense layer's real grains over the
+     annulus's reference real grains (0 for compaction alone; grains
+     moved to another annulus count too, negative when gained).
+   Reported: the surface drop on the axis (the first annulus) +- its
+   sigma; the crater depth, the largest d(r) among the annuli whose drop
+   is significant (0 +- the median sigma when none is: a plain max over
+   ~40 annuli of noise reads a few sigma, the old 0.97 mm at t = 0 of the
+   5000-parcel demo), its annulus (at r) and the crater radius where d(r)
+   falls to half of it outward (linear between annulus centres); the
+   eroded fraction of the axis annulus and of the whole layer.
+   Significant: were the surface still at H, the dense grains below the
+   measured quantile would be Binomial(N_eff, p0 = 0.9 h/H); the drop
+   counts when 0.9 N_eff lies 3 of its sd above its mean, z > 3.  (The
+   height's error has a long tail toward low surfaces, about 6 effective
+   grains lying above Q_0.9 in a 100-parcel annulus: judged as d > 3
+   sigma, 30 % of untouched 5000-parcel layers show a crater, 1.5 % on
+   the count; validation/psiObservables.)  Known bias: the quantile of a
+   few grains reads low by about h/(2 N_eff) (0.15 sigma on an untouched
+   demo layer, 0.5 sigma on a 0.4 mm crater floor, whose spread is also
+   1.25 sigma).
 2. Shock standoff (shock_standoff).  Gas density (the first written of
    rhoNMean, rhoN, rhoMMean, rhoM) along the axis: in each column of
-   cells (equal x) the one nearest the axis, if within nozzleRadius/4;
-   smoothed by a 3-cell running mean.  Jet density: the minimum of the smoothed
-   profile upstream of the surface; post-shock density: the median of the
-   smoothed profile between that minimum and the surface.  The shock is
-   where the profile first rises through their midpoint after the minimum
-   (linear between cells); the standoff is X_s - x_shock.  No shock when
-   the post-shock density is below 1.5 times the jet density: a thick,
-   diffuse shock layer with no plateau (the density rising steadily to the
-   cold wall, as in tutorials/gas/impingingStream) is reported as none;
-   axis_density.png shows the profile and the shock found.
+   cells (equal x) the mean of the cells within nozzleRadius/8 of the axis
+   weighted by radius (4 rows in the demo; the nearest cell when none is
+   that close; columns whose nearest cell is beyond nozzleRadius/4 are
+   left out), smoothed by a 3-cell running mean.  The tutorial's rhoNMean
+   is a batch mean over the steps since the previous write (fieldAverage
+   restartOnOutput; without it, a mean since the start of the run: a note
+   says which); rhoN is one step's simulators.  Search region: from the
+   nozzle exit (x = 0) to the stagnation peak, the largest density in the
+   half of the gap next to the surface (the wall, or the top of a dust
+   layer that holds the gas off it).  Shock layer: the run of cells ending
+   at the peak whose density is at least 1.5 times the jet's (the 0.25
+   quantile of the region, not a dip), dips shorter than 3 cells included; it must be 3 cells
+   long at least (a sustained rise), else no shock.  Jet density: the
+   minimum upstream of the layer; post-shock: the median over the layer.
+   The shock is where the profile first rises through their midpoint in
+   the layer (linear between cells); the standoff is X_s - x_shock.
+   Before (one axis row, the first crossing of the midpoint after the
+   global minimum) a dip of the jet's noise far upstream could be the
+   minimum and a later jet wiggle the crossing: standoffs of 8-17 mm on
+   the hybrid demo at some writes, against about 3 mm.  axis_density.png
+   shows the profile and the shock found.
 3. Ejection angle (ejection_angles).  Ejecta: parcels above the initial
    layer top (x < layerTop) moving away from the surface (U_x < 0).  Angle
    above the surface: atan2(-U_x, sqrt(U_y^2 + U_z^2)), 0 along the
@@ -93,10 +131,19 @@ from rmf import foam
 
 CLOUD = "grains"
 SETTINGS = ("surface", "nozzleRadius", "layerTop", "layerRadius", "crossingRadius")
-SURFACE_FRACTION = 0.5          # dust slab taken while density >= 0.5 of initial
+SURFACE_QUANTILE = 0.9          # surface height: this real-grain quantile / itself
+SURFACE_FRACTION = 0.5          # dense layer: ends at two slabs below 0.5 x initial
+MIN_PARCELS = 100               # reference parcels an annulus needs (merged out to it)
+SLAB_PARCELS = 20               # reference parcels per slab (2 to 10 slabs)
+SIGNIFICANCE = 3                # crater depth: annuli whose drop has z > 3
 SHOCK_RISE = 1.5                # post-shock over jet density needed for a shock
-AXIS_FRACTION = 0.25            # axis cells: first row, within 0.25 nozzleRadius
+AXIS_FRACTION = 0.25            # axis columns: first row within 0.25 nozzleRadius
+AXIS_BAND = 0.125               # rows within 0.125 nozzleRadius averaged
 SMOOTH_CELLS = 3                # running mean along the axis
+SHOCK_SUSTAIN = 3               # cells: the shock layer's length and longest dip
+JET_QUANTILE = 0.25             # jet level of the shock layer's threshold
+PEAK_REGION = 0.5               # stagnation peak sought in this fraction of the
+                                # nozzle-surface gap next to the surface
 SHELL = 0.5e-3                  # half width of the crossing shell [m]
 STAGNATION_HEIGHT = 5e-3        # stagnation region height without a shock [m]
 HISTOGRAM_TIMES = 4             # default number of times in the histograms
@@ -233,76 +280,169 @@ def field(case, time, name, ncells):
 
 # ------------------------------------------------------- observables ----
 
-def _bins(settings, dr, dx):
-    X_s, R = settings["surface"], settings["layerRadius"]
-    H = X_s - settings["layerTop"]
+def annuli(reference, settings, dr=None, min_parcels=MIN_PARCELS):
+    """Annulus edges of the crater: annuli of width dr (default
+    nozzleRadius/8) from the axis to layerRadius, merged outward until each
+    holds min_parcels parcels of the reference layer (a remainder below it
+    joins the annulus inside it).  Returns (edges, reference parcels per
+    annulus); a single annulus below min_parcels is not measurable."""
+    R = settings["layerRadius"]
     dr = dr or settings["nozzleRadius"]/8
-    dx = dx or H/10
-    nr = max(1, int(round(R/dr)))
-    nx = int(math.ceil(X_s/dx))
-    return np.linspace(0, R, nr + 1), dx, nx, H
+    fine = np.linspace(0, R, max(1, int(round(R/dr))) + 1)
+    counts, _ = np.histogram(radius(reference["pos"]), fine)
+    edges, held = [0.0], []
+    total = 0
+    for j, c in enumerate(counts):
+        total += c
+        if total >= min_parcels:
+            edges.append(fine[j + 1])
+            held.append(total)
+            total = 0
+    if total or len(edges) == 1:
+        if len(edges) > 1:
+            edges[-1] = fine[-1]
+            held[-1] += total
+        else:
+            edges.append(fine[-1])
+            held.append(total)
+    return np.array(edges), np.array(held)
 
 
-def _slab_counts(p, settings, r_edges, dx, nx):
-    """Real grains per (slab from the wall, annulus)."""
-    X_s = settings["surface"]
-    k = np.floor((X_s - p["pos"][:, 0])/dx).astype(int)
-    k[(k == -1)] = 0                     # on the wall within a slab
-    j = np.searchsorted(r_edges, radius(p["pos"]), side="right") - 1
-    keep = (k >= 0) & (k < nx) & (j >= 0) & (j < len(r_edges) - 1)
-    counts = np.zeros((nx, len(r_edges) - 1))
-    np.add.at(counts, (k[keep], j[keep]), p["n"][keep])
-    return counts
+def weighted_quantile(values, weights, q):
+    """Quantile q of values with weights: linear between the midpoints of
+    the sorted values' cumulative weights (exact for a lattice)."""
+    order = np.argsort(values)
+    v, w = values[order], weights[order]
+    c = (np.cumsum(w) - 0.5*w)/w.sum()
+    return float(np.interp(q, c, v))
 
 
-def surface_profile(p, reference, settings, dr=None, dx=None,
-                    fraction=SURFACE_FRACTION):
-    """Dust surface and crater depth against r (module docstring, item 1).
+def _in_layer(p, settings):
+    X_s, top = settings["surface"], settings["layerTop"]
+    x = p["pos"][:, 0]
+    keep = (x >= top - 1e-9*X_s) & (x <= X_s + 1e-9*X_s) & \
+        (radius(p["pos"]) <= settings["layerRadius"])
+    return dict(pos=p["pos"][keep], n=p["n"][keep])
+
+
+def surface_profile(p, reference, settings, dr=None, dx=None, quantile=SURFACE_QUANTILE,
+                    fraction=SURFACE_FRACTION, min_parcels=MIN_PARCELS,
+                    significance=SIGNIFICANCE):
+    """Dust surface, surface drop, crater depth and eroded fraction against
+    r (module docstring, item 1).
 
     p, reference: parcels now and at the reference time (dicts of
-    `parcels`).  dr: annulus width (default nozzleRadius/8); dx: slab height
-    (default a tenth of the layer).  Returns dict(r_edges, r [annulus
-    centres], height [surface height above the wall], depth [H - height],
-    max_depth, r_max [centre of the deepest annulus]); annuli with no
-    reference grains hold NaN in the arrays and are left out of the max.
+    `parcels`).  dr: width of the annuli before merging (`annuli`); dx:
+    slab height of the density criterion (default: the layer over
+    reference parcels / SLAB_PARCELS slabs, 2 to 10).  Returns dict(r_edges,
+    r [annulus centres], parcels [reference parcels per annulus], height
+    [surface height above the wall], sigma [its noise], depth [H - height],
+    eroded [fraction of the annulus's reference real grains not in its
+    dense layer], surface_drop, surface_drop_sigma [the axis annulus],
+    max_depth, max_depth_sigma, r_max [the deepest annulus whose drop is
+    significant, z > `significance`; 0, the median sigma and None when
+    none is],
+    radius [half-depth radius, or None], eroded_axis, eroded_layer, layer
+    [H], z [significance of the drop, see below]); annuli not measurable (fewer than min_parcels reference parcels)
+    hold NaN.
     """
-    r_edges, dx, nx, H = _bins(settings, dr, dx)
-    X_s, top = settings["surface"], settings["layerTop"]
-    in_layer = (reference["pos"][:, 0] >= top - 1e-9*X_s) & \
-        (reference["pos"][:, 0] <= X_s + 1e-9*X_s)
-    ref = dict(pos=reference["pos"][in_layer], n=reference["n"][in_layer])
-    column = _slab_counts(ref, settings, r_edges, dx, nx).sum(axis=0)
-    slab0 = column*dx/H                   # reference real grains per slab
-    counts = _slab_counts(p, settings, r_edges, dx, nx)
-    height = np.full(len(column), np.nan)
-    for j in np.nonzero(column > 0)[0]:
-        ratio = counts[:, j]/slab0[j]
-        below = np.nonzero(ratio < fraction)[0]
-        last = below[0] if len(below) else nx - 1
-        height[j] = ratio[:last + 1].sum()*dx
-    depth = H - height
-    valid = np.isfinite(depth)
-    if not valid.any():
+    X_s, H = settings["surface"], settings["surface"] - settings["layerTop"]
+    ref = _in_layer(reference, settings)
+    if len(ref["n"]) == 0:
         raise ValueError("surface_profile: no reference grain in the layer "
-                         f"[{top}, {X_s}] within r <= {r_edges[-1]}")
-    i = np.nanargmax(depth)
-    centres = 0.5*(r_edges[1:] + r_edges[:-1])
-    return dict(r_edges=r_edges, r=centres, height=height, depth=depth,
-                max_depth=float(depth[i]), r_max=float(centres[i]), layer=H)
+                         f"[{settings['layerTop']}, {X_s}] within r <= "
+                         f"{settings['layerRadius']}")
+    edges, held = annuli(ref, settings, dr, min_parcels)
+    m = len(held)
+    j_ref = np.searchsorted(edges, radius(ref["pos"]), side="right") - 1
+    ref_grains = np.bincount(np.clip(j_ref, 0, m - 1), weights=ref["n"], minlength=m)
+    h_all = X_s - p["pos"][:, 0]
+    j_all = np.searchsorted(edges, radius(p["pos"]), side="right") - 1
+    height, sigma, dense_grains, n_eff = (np.full(m, np.nan) for _ in range(4))
+    for j in range(m):
+        if held[j] < min_parcels:
+            continue
+        slabs = int(min(10, max(2, held[j]//SLAB_PARCELS)))
+        step = dx or H/slabs
+        sel = (j_all == j) & (h_all >= -1e-9*X_s) & (h_all <= X_s)
+        h, w = np.maximum(h_all[sel], 0.0), p["n"][sel]
+        k = np.minimum((h/step).astype(int), int(X_s/step))
+        per_slab = ref_grains[j]*step/H
+        counts = np.bincount(k, weights=w, minlength=int(X_s/step) + 2)
+        low = counts < fraction*per_slab
+        run = np.nonzero(low[:-1] & low[1:])[0]          # two slabs in a row
+        top = run[0] if len(run) else len(counts) - 1    # first of them included
+        dense = k <= top
+        dense_grains[j] = w[dense].sum()
+        if not dense.any():
+            height[j], sigma[j] = 0.0, 0.0               # bare wall
+            continue
+        hq = weighted_quantile(h[dense], w[dense], quantile)
+        n_eff[j] = w[dense].sum()**2/np.sum(w[dense]**2)
+        height[j] = hq/quantile
+        sigma[j] = height[j]*math.sqrt(quantile*(1 - quantile)/n_eff[j])/quantile
+    depth = H - height
+    # significance of a drop: were the surface still at H, the dense grains
+    # below the measured quantile would be Binomial(N_eff, p0 = q h/H);
+    # z = how many of its sd q N_eff lies above its mean
+    with np.errstate(invalid="ignore", divide="ignore"):
+        p0 = np.clip(quantile*height/H, 1e-12, 1 - 1e-12)
+        z = np.where(height == 0, np.inf,
+                     (quantile - p0)*np.sqrt(n_eff/(p0*(1 - p0))))
+    eroded = 1 - dense_grains/ref_grains
+    centres = 0.5*(edges[1:] + edges[:-1])
+    ok = np.isfinite(depth)
+    out = dict(r_edges=edges, r=centres, parcels=held, height=height, sigma=sigma,
+               depth=depth, z=z, eroded=eroded, layer=H, surface_drop=None,
+               surface_drop_sigma=None, max_depth=None, max_depth_sigma=None,
+               r_max=None, radius=None, eroded_axis=None, eroded_layer=None)
+    if not ok.any():
+        return out
+    out.update(surface_drop=float(depth[0]) if ok[0] else None,
+               surface_drop_sigma=float(sigma[0]) if ok[0] else None,
+               eroded_axis=float(eroded[0]) if ok[0] else None,
+               eroded_layer=float(1 - np.nansum(dense_grains)/ref_grains[ok].sum()))
+    significant = ok & (np.where(ok, z, -np.inf) > significance)
+    if not significant.any():
+        out.update(max_depth=0.0, max_depth_sigma=float(np.median(sigma[ok])))
+        return out
+    i = int(np.nonzero(significant)[0][np.argmax(depth[significant])])
+    out.update(max_depth=float(depth[i]), max_depth_sigma=float(sigma[i]),
+               r_max=float(centres[i]))
+    half = 0.5*depth[i]
+    for k in range(i + 1, m):                        # out to half the depth
+        if not ok[k]:
+            break
+        if depth[k] <= half:
+            f = (depth[k - 1] - half)/(depth[k - 1] - depth[k])
+            out["radius"] = float(centres[k - 1] + f*(centres[k] - centres[k - 1]))
+            break
+    return out
 
 
-def axis_profile(x, r, values, cap):
+def axis_profile(x, r, values, cap, band=0.0):
     """Values along the axis: in each column of cell centres (equal x to
-    1 nm) the cell(s) nearest the axis, when within cap of it (graded or
-    multi-block meshes keep their own first row): (x, values) sorted by x."""
+    1 nm) the mean of the cells within `band` of the axis, weighted by
+    their radius (a wedge cell's volume on a uniform radial spacing), or of
+    the cell(s) nearest the axis when none is within band; columns whose
+    nearest cell is beyond cap are left out (graded or multi-block meshes
+    keep their own first rows): (x, values) sorted by x."""
     xs = np.round(x, 9)
     unique, index = np.unique(xs, return_inverse=True)
     first = np.full(len(unique), np.inf)
     np.minimum.at(first, index, r)
-    near = (r <= first[index] + 1e-9) & (first[index] <= cap)
+    near = ((r <= first[index] + 1e-9) | (r <= band)) & (first[index] <= cap)
     keep, index = np.unique(index[near], return_inverse=True)
-    mean = np.bincount(index, weights=values[near])/np.bincount(index)
+    w = np.maximum(r[near], 1e-300)
+    mean = np.bincount(index, weights=w*values[near])/np.bincount(index, weights=w)
     return unique[keep], mean
+
+
+def axis_density(x, r, rho, settings):
+    """The axis profile of the shock (module docstring, item 2): rows
+    within AXIS_BAND nozzleRadius, columns within AXIS_FRACTION of it."""
+    return axis_profile(x, r, rho, AXIS_FRACTION*settings["nozzleRadius"],
+                        AXIS_BAND*settings["nozzleRadius"])
 
 
 def _running_mean(v, cells):
@@ -310,32 +450,55 @@ def _running_mean(v, cells):
     return np.convolve(v, kernel, "same")/np.convolve(np.ones_like(v), kernel, "same")
 
 
-def shock_standoff(x, rho, surface, smooth=SMOOTH_CELLS, rise=SHOCK_RISE):
+def _layer_start(s, level, sustain):
+    """First index of the run of cells ending at the last one where
+    s >= level, dips below level shorter than `sustain` cells included;
+    len(s) when the last cell is below level."""
+    k, below = len(s), 0
+    for i in range(len(s) - 1, -1, -1):
+        if s[i] >= level:
+            k, below = i, 0
+        else:
+            below += 1
+            if below >= sustain or k == len(s):
+                break
+    return k
+
+
+def shock_standoff(x, rho, surface, smooth=SMOOTH_CELLS, rise=SHOCK_RISE,
+                   sustain=SHOCK_SUSTAIN):
     """Normal-shock standoff on the axis (module docstring, item 2).
 
-    x, rho: the axis profile (sorted by x).  Returns dict(standoff,
-    x_shock, rho_jet, rho_post, smooth [the smoothed profile]) or, when
-    no shock is found, dict(standoff=None, note=why).
+    x, rho: the axis profile (sorted by x; the cells between the nozzle
+    exit x = 0 and the surface are searched).  Returns dict(standoff,
+    x_shock, rho_jet, rho_post, x_peak, smooth [the smoothed profile], x)
+    or, when no shock is found, dict(standoff=None, note=why).
     """
-    upstream = x < surface
-    x, rho = x[upstream], rho[upstream]
-    if len(x) < 4:
+    inside = (x >= 0) & (x < surface)
+    x, rho = x[inside], rho[inside]
+    if len(x) < 2*sustain:
         return dict(standoff=None, note=f"{len(x)} axis cells: too few for a shock")
     s = _running_mean(rho, smooth)
-    i = int(np.argmin(s))
-    jet = s[i]
-    if i >= len(s) - 2:
-        return dict(standoff=None, note="density falls all the way to the surface")
-    post = float(np.median(s[i + 1:]))
-    if not (post > 0 and post >= rise*jet):
+    # stagnation peak (the wall or the dust top): the largest density in the
+    # part of the gap next to the surface (the exit may be denser)
+    near = np.nonzero(x >= (1 - PEAK_REGION)*surface)[0]
+    if len(near) == 0 or near[0] < sustain:
+        return dict(standoff=None, note=f"{len(near)} axis cells near the surface")
+    peak = int(near[np.argmax(s[near])])
+    jet = float(np.quantile(s[:peak + 1], JET_QUANTILE))  # typical jet, not a dip
+    k = _layer_start(s[:peak + 1], rise*jet, sustain)
+    if not jet > 0 or peak + 1 - k < sustain or k == 0:
         return dict(standoff=None,
-                    note=f"no rise to {rise} x the jet density after its minimum "
-                         f"(jet {jet:.3g}, downstream median {post:.3g})")
+                    note=f"no rise to {rise} x the jet density ({jet:.3g}) sustained "
+                         f"over {sustain} cells up to the stagnation peak at "
+                         f"x = {1e3*x[peak]:.3g} mm")
+    jet, post = float(s[:k].min()), float(np.median(s[k:peak + 1]))
     mid = 0.5*(jet + post)
-    k = i + 1 + int(np.nonzero(s[i + 1:] >= mid)[0][0])
-    x_shock = x[k - 1] + (mid - s[k - 1])*(x[k] - x[k - 1])/(s[k] - s[k - 1])
+    j = k + int(np.nonzero(s[k:peak + 1] >= mid)[0][0])
+    f = (mid - s[j - 1])/(s[j] - s[j - 1]) if s[j] != s[j - 1] else 0.5
+    x_shock = x[j - 1] + min(max(f, 0.0), 1.0)*(x[j] - x[j - 1])
     return dict(standoff=float(surface - x_shock), x_shock=float(x_shock),
-                rho_jet=float(jet), rho_post=post, smooth=s, x=x)
+                rho_jet=jet, rho_post=post, x_peak=float(x[peak]), smooth=s, x=x)
 
 
 def ejecta(p, settings):
@@ -458,7 +621,7 @@ def analyse(case, dr=None, dx=None, shell=SHELL, radial_weight=None):
     times [rows], notes, reference time)."""
     settings = read_settings(case)
     cells = mesh(case)
-    rows, notes, reference = [], [], None
+    rows, notes, reference, averaged = [], [], None, set()
     for t in foam.times(case):
         row = dict(time=t, t=float(t))
         p = parcels(case, t, radial_weight=radial_weight)
@@ -490,11 +653,13 @@ def analyse(case, dr=None, dx=None, shell=SHELL, radial_weight=None):
             notes.append(f"t = {t}: no gas density ({', '.join(DENSITIES)}): shock n/a")
             row["shock"] = None
         else:
-            x, values = axis_profile(cells["x"], cells["r"], rho,
-                                     AXIS_FRACTION*settings["nozzleRadius"])
+            x, values = axis_density(cells["x"], cells["r"], rho, settings)
             row["axis"] = (x, values)
             row["shock"] = shock_standoff(x, values, settings["surface"])
             row["shock"]["field"] = name
+            if name not in averaged and (values > 0).any():
+                averaged.add(name)
+                notes.append(density_note(case, name))
             if row["shock"]["standoff"] is None:
                 notes.append(f"t = {t}: no shock on the axis ({row['shock']['note']})")
         row["alpha"] = max_alpha(field(case, t, "alpha." + CLOUD, cells["n"]))
@@ -520,6 +685,26 @@ def analyse(case, dr=None, dx=None, shell=SHELL, radial_weight=None):
                 polygons=meridian_cells(case) if cells["n"] <= MAX_POLYGONS else None)
 
 
+def density_note(case, name):
+    """What the density field of the shock is: a fieldAverage mean is over
+    the steps since the previous write when system/controlDict sets
+    restartOnOutput (the tutorial's batch means), else since the start of
+    the run (a cumulative mean: the standoff of the time-averaged flow)."""
+    if not name.endswith("Mean"):
+        return (f"shock from {name}: one step's simulators (no time average "
+                "written: noisy)")
+    try:
+        with open(os.path.join(case, "system", "controlDict")) as f:
+            text = re.sub(r"//[^\n]*", " ", f.read())
+    except OSError:
+        text = ""
+    if re.search(r"restartOnOutput\s+(true|on|yes)\s*;", text):
+        return (f"shock from {name}: batch mean over the steps since the previous "
+                "write (fieldAverage restartOnOutput)")
+    return (f"shock from {name}: mean since the start of the run (fieldAverage "
+            "without restartOnOutput: the standoff of the time-averaged flow)")
+
+
 def _get(row, key, sub):
     item = row.get(key)
     return None if item is None else item.get(sub)
@@ -529,8 +714,14 @@ def _get(row, key, sub):
 COLUMNS = (
     ("t [us]", None, None, 1e6, "{:.4g}"),
     ("real grains", "grains", None, 1, "{:.4g}"),
+    ("surface drop axis [mm]", "crater", "surface_drop", 1e3, "{:.3f}"),
+    ("+- [mm]", "crater", "surface_drop_sigma", 1e3, "{:.3f}"),
     ("crater depth [mm]", "crater", "max_depth", 1e3, "{:.3f}"),
+    ("+- [mm]", "crater", "max_depth_sigma", 1e3, "{:.3f}"),
     ("at r [mm]", "crater", "r_max", 1e3, "{:.2f}"),
+    ("crater radius [mm]", "crater", "radius", 1e3, "{:.2f}"),
+    ("eroded axis", "crater", "eroded_axis", 1, "{:.3f}"),
+    ("eroded layer", "crater", "eroded_layer", 1, "{:.4f}"),
     ("shock standoff [mm]", "shock", "standoff", 1e3, "{:.3f}"),
     ("ejection angle mean [deg]", "angles", "mean", 1, "{:.1f}"),
     ("median [deg]", "angles", "median", 1, "{:.1f}"),
@@ -597,10 +788,26 @@ def key_numbers(analysis):
         else:
             out.append(f"- {label}: {form.format(found[1]*scale)}{unit} at t = {found[0]} s")
 
-    at_last("Crater depth (max over r of the surface's recession below the initial "
-            f"layer top, H = {1e3*(s['surface'] - s['layerTop']):.3g} mm)",
-            "crater", "max_depth", 1e3, " mm", "{:.3f}")
+    H = 1e3*(s['surface'] - s['layerTop'])
+
+    def with_noise(label, sub, noise):
+        for r in reversed(rows):
+            v, e = value(r, "crater", sub), value(r, "crater", noise)
+            if v is not None and e is not None:
+                out.append(f"- {label}: {1e3*v:.3f} +- {1e3*e:.3f} mm at t = {r['time']} s")
+                return
+        out.append(f"- {label}: n/a (never available, see the notes)")
+
+    with_noise(f"Surface drop on the axis (the surface below the initial layer top, "
+               f"H = {H:.3g} mm, in the first annulus)", "surface_drop", "surface_drop_sigma")
+    with_noise(f"Crater depth (largest surface drop among the annuli where it is "
+               f"significant, z > {SIGNIFICANCE})", "max_depth", "max_depth_sigma")
     at_last("Radius of the deepest annulus", "crater", "r_max", 1e3, " mm", "{:.2f}")
+    at_last("Crater radius (half depth)", "crater", "radius", 1e3, " mm", "{:.2f}")
+    at_last("Eroded real-grain fraction, axis annulus", "crater", "eroded_axis", 1, "",
+            "{:.3f}")
+    at_last("Eroded real-grain fraction, whole layer", "crater", "eroded_layer", 1, "",
+            "{:.4f}")
     at_last("Shock standoff on the axis", "shock", "standoff", 1e3, " mm", "{:.3f}")
     standoffs = series(analysis, "shock", "standoff")
     if len(standoffs) > 1:
@@ -640,7 +847,11 @@ def key_numbers(analysis):
 def definitions(analysis):
     """Definitions of the observables with this run's bins and options."""
     s, o = analysis["settings"], analysis["options"]
-    r_edges, dx, _, H = _bins(s, o["dr"], o["dx"])
+    H = s["surface"] - s["layerTop"]
+    dr = o["dr"] or s["nozzleRadius"]/8
+    first = next((r["crater"] for r in analysis["rows"] if r.get("crater")), None)
+    merged = (f"{len(first['r'])} annuli, the first {1e3*first['r_edges'][1]:.3g} mm wide"
+              if first else "no annulus")
     weight = "nParticle"
     if o["radial_weight"]:
         W, R = o["radial_weight"]
@@ -648,17 +859,28 @@ def definitions(analysis):
     return [
         f"- Real grains of a parcel: {weight}; every statistic is weighted by them "
         "(ejection angle: by mass, real grains x d^3).",
-        f"- Crater: annuli of {1e3*(r_edges[1] - r_edges[0]):.3g} mm to r = "
-        f"{1e3*r_edges[-1]:.3g} mm, slabs of {1e3*dx:.3g} mm from the wall up; dust "
-        f"thickness = real grains of the slabs up to the first one below "
-        f"{SURFACE_FRACTION} of the initial density (included), over the initial "
-        f"density (time {analysis['reference']} s); depth = H - thickness, "
-        f"H = X_s - layerTop = {1e3*H:.3g} mm; crater depth = max over the annuli.",
-        "- Shock: per x, the cell nearest the axis (within "
-        f"{AXIS_FRACTION} nozzleRadius), "
-        f"{SMOOTH_CELLS}-cell running mean of the first of {', '.join(DENSITIES)}; where it rises "
-        "through the midpoint of the jet minimum and the median downstream of it; "
-        f"none below a {SHOCK_RISE}x rise; standoff = X_s - x_shock.",
+        f"- Crater: annuli of {1e3*dr:.3g} mm to r = {1e3*s['layerRadius']:.3g} mm merged "
+        f"outward to {MIN_PARCELS} parcels of the reference layer (time "
+        f"{analysis['reference']} s) each: {merged}; dense layer: slabs "
+        + (f"of {1e3*o['dx']:.3g} mm" if o["dx"] else
+           f"of H/n, n = reference parcels/{SLAB_PARCELS} (2 to 10),")
+        + f" up to the first of two in a row below {SURFACE_FRACTION} of the reference "
+        f"density (included); surface height h = Q_{SURFACE_QUANTILE}/{SURFACE_QUANTILE} of "
+        f"the dense grains' heights above the wall (real grains), noise sigma = "
+        f"h sqrt(q(1 - q)/N_eff)/q; surface drop = H - h, H = X_s - layerTop = "
+        f"{1e3*H:.3g} mm; crater depth = the largest drop among the annuli where it is "
+        f"significant (count test: q N_eff over Binomial(N_eff, q h/H), z > {SIGNIFICANCE}; "
+        "0 +- the median sigma if none); crater radius: where the "
+        "drop falls to half of it outward; eroded fraction = 1 - dense real grains / "
+        "reference real grains (axis annulus; whole layer).",
+        f"- Shock: per x, the radius-weighted mean of the cells within {AXIS_BAND} "
+        f"nozzleRadius of the axis (the nearest one if none; columns beyond {AXIS_FRACTION} "
+        f"nozzleRadius left out), {SMOOTH_CELLS}-cell running mean of the first of "
+        f"{', '.join(DENSITIES)}; stagnation peak: the maximum in the {PEAK_REGION:g} of "
+        f"the gap next to the surface; shock layer: the cells ending at the peak above "
+        f"{SHOCK_RISE}x the {JET_QUANTILE} quantile (dips < {SHOCK_SUSTAIN} cells; at least "
+        f"{SHOCK_SUSTAIN} cells, else no shock); shock where the profile rises through "
+        "the midpoint of the jet minimum and the layer's median; standoff = X_s - x_shock.",
         "- Ejecta: parcels with x < layerTop and U_x < 0; ejection angle = "
         "atan2(-U_x, sqrt(U_y^2 + U_z^2)) above the surface.",
         f"- Crossing: real grains within {1e3*o['shell']:g} mm of r = "
@@ -708,11 +930,14 @@ def plot_crater(ax, analysis, rows, title=None):
         c = r.get("crater")
         if c is None:
             continue
-        ax.stairs(1e3*c["height"], 1e3*c["r_edges"], baseline=None,
-                  label=f"t = {r['time']} s")
+        line = ax.stairs(1e3*c["height"], 1e3*c["r_edges"], baseline=None,
+                         label=f"t = {r['time']} s")
+        ax.stairs(1e3*(c["height"] + c["sigma"]), 1e3*c["r_edges"],
+                  baseline=1e3*(c["height"] - c["sigma"]), fill=True, alpha=0.2,
+                  color=line.get_edgecolor())
     ax.axvline(1e3*s["nozzleRadius"], color="0.7", linestyle=":", label="nozzle radius")
     ax.set_xlabel("r [mm]")
-    ax.set_ylabel("dust surface height above the wall [mm]")
+    ax.set_ylabel("dust surface height above the wall [mm] (band: +- sigma)")
     ax.set_ylim(bottom=0)
     ax.grid(alpha=0.3)
     ax.legend(fontsize=7)
@@ -787,7 +1012,8 @@ def plot_knp(ax, fig, analysis, row, title=None, span=None):
 
 
 TIMESERIES = (
-    ("crater depth [mm]", (("crater", "max_depth", 1e3, "max over r"),)),
+    ("crater [mm]", (("crater", "surface_drop", 1e3, "surface drop, axis"),
+                     ("crater", "max_depth", 1e3, "depth (max, significant)"))),
     ("shock standoff [mm]", (("shock", "standoff", 1e3, "axis"),)),
     ("max alpha", (("alpha", "max", 1, "max alpha"),)),
     ("ejection angle [deg]", (("angles", "mean", 1, "mean"), ("angles", "median", 1, "median"))),
@@ -848,7 +1074,8 @@ def plot_case(analysis, output, wanted=None):
     if not shown:
         ax.text(0.5, 0.5, "no gas density written", ha="center", transform=ax.transAxes)
     ax.set_xlabel("height above the surface on the axis [mm] (dashed: shock)")
-    ax.set_ylabel(f"gas density ({shown[0]['shock']['field'] if shown else 'rhoN'}) "
+    ax.set_ylabel(f"gas density ({shown[-1]['shock']['field'] if shown else 'rhoN'}), "
+                  f"rows within {AXIS_BAND} nozzleRadius "
                   "[1/m^3 or kg/m^3]")
     ax.set_yscale("log")
     ax.grid(alpha=0.3)
@@ -1042,8 +1269,8 @@ def main(argv=None):
     parser.add_argument("--labels", nargs="+")
     parser.add_argument("--output", help="directory for the PNGs and summary.md")
     parser.add_argument("--times", nargs="+", help="times of the profiles and histograms")
-    parser.add_argument("--dr", type=float, help="annulus width of the crater [m]")
-    parser.add_argument("--dx", type=float, help="slab height of the crater [m]")
+    parser.add_argument("--dr", type=float, help="crater annulus width before merging to 100 parcels [m]")
+    parser.add_argument("--dx", type=float, help="slab height of the crater's dense-layer criterion [m]")
     parser.add_argument("--shell", type=float, default=SHELL,
                         help="half width of the crossing shell [m]")
     parser.add_argument("--radial-weight", nargs=2, type=float, metavar=("W", "R"),
