@@ -42,6 +42,26 @@ turned back into the meridional plane, and are weighted radially.
    measured -0.5 to -0.6 %, standard errors 0.06-0.15 %): a sum without
    the gas's weight factor gives up to RWF = 10 times less at the outer
    radius.
+
+4. Placement by the initialiser, which finds the cells of all drawn points
+   by walks from cell to cell (solidInitialise.H, locate), on a fine
+   graded wedge (60 x 120 cells, radial grading 8; 20 000 parcels,
+   sigmaU 1, maxRadialWeight 10): every parcel lies inside its cell, by a
+   test independent of OpenFOAM's (each face plane of the cell, from
+   constant/polyMesh, has it on the inner side within 1e-12 m; the
+   smallest cell is 0.13 mm); the parcels are those of the octree search
+   (polyMesh::findCell) the initialiser used before, exactly: count and
+   sums of positions, cells, velocities, weights and of x.U (each
+   velocity still with its point) stored from that run
+   (commit 941c17a, 15-digit output: relative tolerance 1e-12); and the
+   initialiser run on 2 METIS ranks places the same parcels as in serial
+   (velocities and weights the same numbers, positions within 1e-15 m:
+   they are written from barycentric coordinates, whose round-off
+   depends on the cell numbering; measured 1e-16 m).  A wrong cell from
+   the walk is moved to the right one in serial by the parcel's own
+   tracking from that cell's centre (particle::locate), but not across
+   processors: with the walk replaced by the previous point's cell the
+   2-rank initialiser fails.
 """
 
 import math
@@ -250,3 +270,110 @@ def test_weighted_coupling_heat():
     figures = (f"heating / free-molecular by fifth of the radius {np.round(ratio, 4).tolist()} "
                f"(limit 2 %), standard errors {np.round(se, 4).tolist()}")
     assert _report(abs(ratio - 1).max() < 0.02, "weighted coupling heat", figures)
+
+
+# Placement (item 4): sums over the parcels the octree search placed before
+# the cell walk (commit 941c17a) on the graded wedge below
+PLACED_BEFORE = {
+    "parcels": 20000,
+    "x": 496.3848347848824, "y": 560.3710661943957, "z": 0,
+    "cells": 104371134,
+    "Ux": 12.658450241611945, "Uy": -20.52247438053918, "Uz": -34.157614020257554,
+    "nParticle": 5203.588471784158,
+    "x.U": -1.004778496325276,          # each velocity with its point
+}
+
+
+def _polymesh(case):
+    """Points, faces (list of index arrays), owner, neighbour of an ASCII
+    constant/polyMesh."""
+    poly = os.path.join(case, "constant", "polyMesh")
+    points = foam.read_list(os.path.join(poly, "points"))
+    owner = foam.read_list(os.path.join(poly, "owner")).astype(int)
+    neighbour = foam.read_list(os.path.join(poly, "neighbour")).astype(int)
+    with open(os.path.join(poly, "faces")) as f:
+        text = f.read()
+    body = text[re.search(r"\n\d+\s*\n\(", text).end():]
+    faces = [np.array(m.split(), int) for m in re.findall(r"\d+\(([^()]*)\)", body)]
+    return points, faces, owner, neighbour
+
+
+def _outside(case, x, cells):
+    """Largest distance of each point x[i] outside the face planes of its
+    cell cells[i] (<= 0: inside), from the face centres and Newell normals."""
+    points, faces, owner, neighbour = _polymesh(case)
+    centre = np.array([points[f].mean(axis=0) for f in faces])
+    normal = np.array([np.cross(points[f], points[np.roll(f, -1)]).sum(axis=0)
+                       for f in faces])
+    normal /= np.linalg.norm(normal, axis=1)[:, None]
+    n_cells = owner.max() + 1
+    cell_faces = [[] for _ in range(n_cells)]
+    for facei, celli in enumerate(owner):
+        cell_faces[celli].append((facei, 1.0))
+    for facei, celli in enumerate(neighbour):
+        cell_faces[celli].append((facei, -1.0))
+    width = max(len(c) for c in cell_faces)
+    table = np.zeros((n_cells, width), int)
+    sign = np.zeros((n_cells, width))
+    for celli, entries in enumerate(cell_faces):
+        for j, (facei, s) in enumerate(entries):
+            table[celli, j], sign[celli, j] = facei, s
+    F, S = table[cells], sign[cells]            # unused slots: sign 0
+    d = np.einsum("ijk,ijk->ij", x[:, None, :] - centre[F], normal[F]) * S
+    return np.where(S != 0, d, -np.inf).max(axis=1)
+
+
+def test_placement():
+    """Every parcel in its cell; the same parcels as the octree search and
+    on 2 ranks."""
+    cases = {}
+    for ranks in (1, 2):
+        case = foam.copy_setup(WEDGE, os.path.join(BUILD, f"placement{ranks}"))
+        path = os.path.join(case, "system", "blockMeshDict")
+        with open(path) as f:
+            text = f.read()
+        with open(path, "w") as f:
+            f.write(text.replace("(10 10 1) simpleGrading (1 1 1)",
+                                 "(60 120 1) simpleGrading (1 8 1)"))
+        foam.run(case, "blockMesh")
+        if ranks > 1:
+            foam.run(case, "decomposePar")
+        foam.run(case, "rarefiedMultiphaseInitialise", np_=ranks)
+        cases[ranks] = case
+
+    serial = cases[1]
+    x, cells = foam.read_positions(
+        os.path.join(serial, "0", "lagrangian", "grains", "positions"), cells=True)
+    U = parcels(serial, "0", "U")
+    W = parcels(serial, "0", "nParticle")
+    outside = _outside(serial, x, cells)
+
+    got = {"parcels": len(x), "x": x[:, 0].sum(), "y": x[:, 1].sum(),
+           "z": x[:, 2].sum(), "cells": cells.sum(), "Ux": U[:, 0].sum(),
+           "Uy": U[:, 1].sum(), "Uz": U[:, 2].sum(), "nParticle": W.sum(),
+           "x.U": (x * U).sum()}
+    changed = {k: (v, PLACED_BEFORE[k]) for k, v in got.items()
+               if not v == pytest.approx(PLACED_BEFORE[k], rel=1e-12, abs=1e-12)}
+
+    # The same parcels on 2 ranks: rows (U, nParticle, x) in the order of
+    # the velocities (all different with sigmaU 1); velocities and weights
+    # are the same numbers, positions (from barycentric coordinates in
+    # another cell numbering) the same to round-off (measured 1e-16 m)
+    def rows(dirs):
+        table = np.vstack([np.column_stack([
+            foam.read_list(os.path.join(d, "lagrangian", "grains", "U")),
+            foam.read_list(os.path.join(d, "lagrangian", "grains", "nParticle")),
+            foam.read_positions(os.path.join(d, "lagrangian", "grains", "positions"))])
+            for d in dirs])
+        return table[np.lexsort(table[:, :3].T[::-1])]
+    procs = sorted(os.path.join(cases[2], p, "0") for p in os.listdir(cases[2])
+                   if p.startswith("processor"))
+    one, two = rows([os.path.join(serial, "0")]), rows(procs)
+    same_parallel = (one.shape == two.shape and np.array_equal(one[:, :4], two[:, :4])
+                     and np.abs(one[:, 4:] - two[:, 4:]).max() < 1e-15)
+
+    figures = (f"{len(x)} parcels, largest distance outside the cell {outside.max():.2e} m "
+               f"(limit 1e-12); changed from the octree search: {changed or 'none'}; "
+               f"2 ranks the same: {same_parallel}")
+    ok = outside.max() <= 1e-12 and not changed and same_parallel
+    assert _report(ok, "placement", figures)
