@@ -34,6 +34,27 @@ Foam::OneWayCoupling<CloudType>::OneWayCoupling
 // * * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * //
 
 template<class CloudType>
+void Foam::OneWayCoupling<CloudType>::applyGathered
+(
+    const label celli,
+    const UList<parcelType*>& parcels,
+    const scalar Wg,
+    const scalar dt
+)
+{
+    const scalar V = this->owner().mesh().V()[celli];
+
+    vector dP;
+    scalar dE;
+    for (parcelType* pPtr : parcels)
+    {
+        sums_->apply(*pPtr, Wg, V, dt, dP, dE);
+        this->addExchange(celli, dP, dE);
+    }
+}
+
+
+template<class CloudType>
 void Foam::OneWayCoupling<CloudType>::actOnCell
 (
     const label celli,
@@ -43,16 +64,8 @@ void Foam::OneWayCoupling<CloudType>::actOnCell
     const scalar dt
 )
 {
-    const scalar V = this->owner().mesh().V()[celli];
-
     sums_->gather(inCell);
-    vector dP;
-    scalar dE;
-    for (parcelType* pPtr : parcels)
-    {
-        sums_->apply(*pPtr, Wg, V, dt, dP, dE);
-        this->addExchange(celli, dP, dE);
-    }
+    applyGathered(celli, parcels, Wg, dt);
 }
 
 

@@ -352,14 +352,20 @@ void Foam::TwoWayCoupling<CloudType>::actOnCell
         return;
     }
 
-    // Grains and gas of this cell in turn, n times over dt/n
+    // Grains and gas of this cell in turn, n times over dt/n (the
+    // simulators stay in the cell: gathered once, then refreshed)
     label nAccepted = 0;
     for (label i = 0; i < n; ++i)
     {
-        OneWayCoupling<CloudType>::actOnCell
-        (
-            celli, parcels, inCell, Wg, dt/n
-        );
+        if (i == 0)
+        {
+            this->sums().gather(inCell);
+        }
+        else
+        {
+            this->sums().refresh(inCell);
+        }
+        this->applyGathered(celli, parcels, Wg, dt/n);
         nAccepted += collideCell(celli, inCell, partners, dt/n);
     }
 
