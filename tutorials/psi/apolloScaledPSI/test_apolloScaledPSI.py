@@ -31,7 +31,9 @@ Checks (each able to fail):
   have a mean velocity toward the wall (+x) and those at 8.1-24 mm a mean
   radial velocity outward, each above 5 standard errors of the parcels'
   spread (the layer starts at rest; nothing else moves it).  Measured:
-  U_x 1.86 m/s (5 se 0.81), U_r 0.049 m/s (5 se 0.023).
+  U_x 0.16 m/s (5 se 0.093), U_r 0.0019 m/s (5 se 0.0015); before the
+  dense cells were sub-cycled (TwoWayCoupling.H) the grains received
+  about ten times the momentum the gas gave up: 1.86 and 0.049 m/s.
 - The summary exists (rmf.psi ran on the result).
 """
 
