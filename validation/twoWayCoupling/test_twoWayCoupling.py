@@ -30,8 +30,8 @@ randomSeed).
   Dense runs (twoWayIndirect-dense, twoWayDirect-dense): 1000 times the
   grains per parcel (M_s = 1000 M_g), so that a simulator meets ~1.6
   grains per step (largest 2.3): the one cell is sub-cycled
-  (TwoWayCoupling.H, maxCollisionsPerStep 0.1: some 20 sub-steps) at
-  every step; 20 steps written every 2, in which the gas relaxes onto the
+  (TwoWayCoupling.H, maxCollisionsPerStep 0.1: 62-73 sub-steps, set by
+  the fastest simulator's x of ~7) at every step; 20 steps written every 2, in which the gas relaxes onto the
   grains.  Without the sub-cycling the grains receive about as many
   times the gas's momentum as it makes collisions per step: momentum
   fails check 1 by 77-220 sigma and the grains' velocity moves 3 m/s
