@@ -56,23 +56,6 @@ inline wordList withCommon(const wordList& valid)
 }
 
 
-//- An optional scalar of coeffs that must be > 0 (and finite)
-inline scalar positiveOrDefault
-(
-    const dictionary& coeffs,
-    const word& keyword,
-    const scalar deflt
-)
-{
-    const scalar value = coeffs.getOrDefault<scalar>(keyword, deflt);
-    if (!(value > 0 && std::isfinite(value)))
-    {
-        inputChecks::outOfRange(coeffs, keyword, value, "(0, inf)");
-    }
-    return value;
-}
-
-
 //- A unit vector normal to the unit vector a
 inline vector normalTo(const vector& a)
 {
@@ -420,7 +403,7 @@ Foam::TwoWayCoupling<CloudType>::TwoWayCoupling
     remainder_(owner.mesh().nCells(), Zero),
     maxCollisionsPerStep_
     (
-        TwoWayCouplingTools::positiveOrDefault
+        inputChecks::getPositiveOrDefault
         (
             TwoWayCouplingTools::checkedCoeffs
             (
