@@ -1,0 +1,114 @@
+#!/usr/bin/python3
+"""Cost of a step with averagingMethod cachedDual against upstream's dual.
+
+Case: tutorials/psi/apolloScaledPSI, variant MPPIC (explicit packing,
+relaxation damping, stochastic isotropy: about eleven averages built per
+step), settings --settings (demo: 8160 cells, 5000 parcels; full: 1.16M
+cells, 1.0M parcels), meshed and initialised once.  Each repetition runs
+the solver serially with dual and then with cachedDual, each on a fresh
+copy, for --steps steps from t = 0.  The cost per step is taken from the
+solver's own ExecutionTime (CPU) between the end of its first and its last
+step, so start-up (reading the mesh and the parcels) and the first step
+are left out:
+
+    t_step = (ExecutionTime_N - ExecutionTime_1)/(N - 1)
+
+Reported: t_step of each per repetition, the minimum over the repetitions
+and the ratio cachedDual/dual of the minima (target < 1: cachedDual gives
+the same results, checked here too: the last time directories must be
+byte-identical, else the run counts as failed).  Exit status 0 unless a
+run fails.  The demo's first steps (the jet still on its way: ~140 steps)
+hold no dense gas-grain work, so the demo's ratio over its whole run is
+nearer 1 than over the first steps; --steps 2000 runs the whole demo.
+
+Run from the project directory:
+
+    . etc/bashrc && bench/cachedDual/bench.py [--settings demo|full]
+        [--steps N] [--repeat R]
+
+Defaults: --settings full --steps 3 --repeat 1 (about 10 minutes, 3 GB).
+"""
+
+import argparse
+import filecmp
+import os
+import re
+import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                "..", "..", "src", "python"))
+from rmf import foam  # noqa: E402
+
+TUTORIAL = os.path.join(foam.PROJECT_DIR, "tutorials", "psi", "apolloScaledPSI")
+BUILD = os.path.join(foam.PROJECT_DIR, "build", "bench", "cachedDual")
+METHODS = ("dual", "cachedDual")
+
+
+def prepare(settings, steps):
+    case = foam.copy_case(TUTORIAL, os.path.join(BUILD, f"{settings}-init"))
+    with open(os.path.join(case, "constant", "caseSettings"), "w") as f:
+        f.write(f"settings {settings};\nvariant MPPIC;\n")
+    end = steps*float(foam.get_entry(case, f"settings/{settings}", "deltaT"))
+    foam.set_entry(case, f"settings/{settings}", "endTime", f"{end:.6g}")
+    foam.set_entry(case, f"settings/{settings}", "writeInterval", f"{end:.6g}")
+    foam.run(case, "blockMesh")
+    foam.run(case, "rarefiedMultiphaseInitialise")
+    return case
+
+
+def copy_of(init, name):
+    """A copy of the initialised case (dst replaced)."""
+    return foam.copy_case(init, os.path.join(BUILD, name))
+
+
+def step_cost(init, settings, method, rep):
+    case = copy_of(init, f"{settings}-{method}-{rep}")
+    foam.set_entry(case, "settings/MPPIC", "averaging", method)
+    log = foam.run(case, "rarefiedMultiphaseFoam")
+    with open(log) as f:
+        et = [float(x) for x in re.findall(r"ExecutionTime = ([0-9.eE+-]+) s", f.read())]
+    if len(et) < 2:
+        raise RuntimeError(f"{log}: fewer than 2 steps timed")
+    return (et[-1] - et[0])/(len(et) - 1), case
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("--settings", choices=("demo", "full"), default="full")
+    parser.add_argument("--steps", type=int, default=3)
+    parser.add_argument("--repeat", type=int, default=1)
+    args = parser.parse_args()
+    if args.steps < 2:
+        parser.error("--steps must be at least 2")
+
+    init = prepare(args.settings, args.steps)
+    costs = {m: [] for m in METHODS}
+    for rep in range(args.repeat):
+        cases = {}
+        for method in METHODS:
+            cost, cases[method] = step_cost(init, args.settings, method, rep)
+            costs[method].append(cost)
+            print(f"repetition {rep}: {method:10s} {cost:.3f} s per step")
+        last = {m: os.path.join(c, foam.latest_time(c)) for m, c in cases.items()}
+        cmp = filecmp.dircmp(last["dual"], last["cachedDual"])
+        _, mismatch, errors = filecmp.cmpfiles(
+            last["dual"], last["cachedDual"],
+            cmp.common_files + [os.path.join("lagrangian", "grains", n) for n in
+                                os.listdir(os.path.join(last["dual"], "lagrangian", "grains"))],
+            shallow=False)
+        if mismatch or errors or cmp.left_only or cmp.right_only:
+            print(f"FAILED: dual and cachedDual differ: {mismatch + errors}")
+            return 1
+
+    best = {m: min(c) for m, c in costs.items()}
+    ratio = best["cachedDual"]/best["dual"]
+    verdict = "" if ratio < 1 else " MISSES TARGET"
+    print(f"bench cachedDual apolloScaledPSI MPPIC {args.settings}, {args.steps} steps: "
+          f"ratio cachedDual/dual = {ratio:.3f} (target < 1){verdict}, "
+          f"dual {best['dual']:.3f} s per step, cachedDual {best['cachedDual']:.3f} s "
+          f"per step (CPU, first step left out); results identical")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
