@@ -1,7 +1,7 @@
 """apolloScaledPSI, reduced: the hybrid variant with the demo settings for
 240 steps (12 us, the jet reaches the surface after ~7 us), 3000 parcels,
 written every 120 steps, through the case's Allrun, serially and on 2 METIS
-ranks (-parallel); each run ends with rmf.psi's summary.  About a minute.
+ranks (-parallel); each run ends with rmf.psi's summary.  About 30 s.
 
 Checks (each able to fail):
 - Nozzle flux: the simulators inserted through `nozzle` in N steps (log
