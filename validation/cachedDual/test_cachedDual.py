@@ -17,15 +17,11 @@ By hand (not committed): a cachedDual that keeps the prototype's name
 instead of the caller's stops the solver at the packing model's look-up
 ("request for averagingMethod grains:volumeAverage ... failed"); one
 whose averages start from 1e-15 instead of 0 fails the identity (8 files
-differ).  The solver's time with cachedDual
-against dual is printed (information only; bench/cachedDual measures it).
+differ).  The solver's time with cachedDual against dual is printed
+(information only; bench/cachedDual measures it).
 """
 
-import filecmp
 import os
-import re
-
-import numpy as np
 
 from rmf import foam
 
@@ -53,26 +49,13 @@ def run(base, method, np_):
     if np_ > 1:
         foam.run(case, "decomposePar")
     log = foam.run(case, "rarefiedMultiphaseFoam", np_=np_)
-    with open(log) as f:
-        seconds = float(re.findall(r"ExecutionTime = ([0-9.eE+-]+) s", f.read())[-1])
-    return case, seconds
+    return case, foam.execution_times(log)[-1]
 
 
 def last_time_dirs(case, np_):
     """The last time directory of each rank (or of the serial case)."""
     roots = [case] if np_ == 1 else [os.path.join(case, f"processor{p}") for p in range(np_)]
     return [os.path.join(root, foam.latest_time(root)) for root in roots]
-
-
-def differing_files(a, b):
-    """Relative paths of files that differ or exist on one side only."""
-    cmp = filecmp.dircmp(a, b)
-    out = [os.path.join(a, n) for n in cmp.left_only + cmp.right_only + cmp.funny_files]
-    _, mismatch, errors = filecmp.cmpfiles(a, b, cmp.common_files, shallow=False)
-    out += [os.path.join(a, n) for n in mismatch + errors]
-    for sub in cmp.common_dirs:
-        out += differing_files(os.path.join(a, sub), os.path.join(b, sub))
-    return out
 
 
 def test_cached_dual_is_dual():
@@ -90,9 +73,9 @@ def test_cached_dual_is_dual():
     # Free fall would reach -g t = -0.39 m/s; packing and isotropy slow it
     assert len(Uz) == PARCELS and Uz.mean() < -0.1, f"mean U_z {Uz.mean():.3f} m/s"
 
-    differ = differing_files(d, c)
+    differ = foam.differing_files(d, c)
     assert not differ, f"{len(differ)} files differ, e.g. {differ[:5]}"
-    sensitive = differing_files(d, b)
+    sensitive = foam.differing_files(d, b)
     assert sensitive, "dual and basic averaging gave the same run"
     print(f"PASS serial: the last time's files identical with dual and "
           f"cachedDual ({len(sensitive)} differ with basic); solver time "
@@ -107,7 +90,7 @@ def test_cached_dual_is_dual_parallel():
     differ = []
     for d, c in zip(last_time_dirs(dual, 2), last_time_dirs(cached, 2)):
         assert os.path.basename(d) != "0", "the run wrote no time"
-        differ += differing_files(d, c)
+        differ += foam.differing_files(d, c)
     assert not differ, f"{len(differ)} files differ, e.g. {differ[:5]}"
     print(f"PASS 2 ranks: the last time's files identical with dual and "
           f"cachedDual; solver time {t_cached:.1f} s against {t_dual:.1f} s")

@@ -6,6 +6,7 @@ of volScalarField / volVectorField files written in ASCII, cell centres
 with its output in log.<application> (as RunFunctions does).
 """
 
+import filecmp
 import os
 import re
 import shutil
@@ -267,3 +268,30 @@ def log_values(log, label):
             if m:
                 rows.append([float(x) for x in m.group(1).translate(_LOG_SEPARATORS).split()])
     return np.array(rows)
+
+
+_EXECUTION_TIME = re.compile(r"ExecutionTime = ([0-9.eE+-]+) s")
+
+
+def execution_times(log):
+    """The CPU time [s] of each 'ExecutionTime = ... s' in a solver log."""
+    with open(log) as f:
+        return [float(x) for x in _EXECUTION_TIME.findall(f.read())]
+
+
+def differing_files(a, b, rel="", equivalent=None):
+    """Paths (relative to a and b) of the files under directories a and b
+    that differ byte for byte or exist on one side only.  equivalent(fa,
+    fb, rel), if given, may accept a pair that differs (rel: the pair's
+    directory relative to a and b)."""
+    cmp = filecmp.dircmp(a, b)
+    diff = [os.path.join(rel, f) for f in cmp.left_only + cmp.right_only + cmp.funny_files]
+    for f in cmp.common_files:
+        fa, fb = os.path.join(a, f), os.path.join(b, f)
+        if not filecmp.cmp(fa, fb, shallow=False):
+            if equivalent is None or not equivalent(fa, fb, rel):
+                diff.append(os.path.join(rel, f))
+    for sub in cmp.common_dirs:
+        diff += differing_files(os.path.join(a, sub), os.path.join(b, sub),
+                                os.path.join(rel, sub), equivalent)
+    return diff
