@@ -1,3 +1,5 @@
+# rarefiedMultiphaseFoam. Copyright (C) 2026 The rarefiedMultiphaseFoam authors
+# SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
 """pytest configuration for ./Alltest: project helpers on sys.path, --long."""
 
 import os

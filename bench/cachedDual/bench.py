@@ -1,4 +1,6 @@
 #!/usr/bin/python3
+# rarefiedMultiphaseFoam. Copyright (C) 2026 The rarefiedMultiphaseFoam authors
+# SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
 """Cost of a step with averagingMethod cachedDual against upstream's dual.
 
 Case: tutorials/psi/apolloScaledPSI, variant MPPIC (explicit packing,

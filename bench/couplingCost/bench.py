@@ -1,4 +1,6 @@
 #!/usr/bin/python3
+# rarefiedMultiphaseFoam. Copyright (C) 2026 The rarefiedMultiphaseFoam authors
+# SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
 """Cost of the gas-grain coupling models against the DSMC step.
 
 Case: validation/freeMolecularCoupling/box (0.1 x 0.08 x 0.08 m, periodic

@@ -1,4 +1,6 @@
 #!/usr/bin/python3
+# rarefiedMultiphaseFoam. Copyright (C) 2026 The rarefiedMultiphaseFoam authors
+# SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
 """Wall-time parity of rarefiedMultiphaseFoam with stock dsmcFoam.
 
 Method: the dsmcFoam tutorial case is copied to

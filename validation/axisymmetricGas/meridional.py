@@ -1,3 +1,5 @@
+# rarefiedMultiphaseFoam. Copyright (C) 2026 The rarefiedMultiphaseFoam authors
+# SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
 """Figures of a gas run binned in the meridional (x, r) plane, for comparing
 an axisymmetric run with a 3-D run of the same (x, r) blocking, or two
 axisymmetric runs with each other (validation/axisymmetricGas/freeStreamPlate).

@@ -1,3 +1,5 @@
+# rarefiedMultiphaseFoam. Copyright (C) 2026 The rarefiedMultiphaseFoam authors
+# SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
 """Axisymmetric gas against a 3-D sector, and on 2 MPI ranks (SPEC.md 6
 and 8; issue 6 items 3 and 7).
 

@@ -1,3 +1,5 @@
+# rarefiedMultiphaseFoam. Copyright (C) 2026 The rarefiedMultiphaseFoam authors
+# SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
 """Figures of an axisymmetric equilibrium-gas run (validation/axisymmetricGas/wedge):
 number density and temperature in radial bins from batch means, the simulator
 count over time, and the NTC collision count against the equilibrium VHS rate.

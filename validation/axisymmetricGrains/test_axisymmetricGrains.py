@@ -1,3 +1,5 @@
+# rarefiedMultiphaseFoam. Copyright (C) 2026 The rarefiedMultiphaseFoam authors
+# SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
 """Axisymmetric grains (SPEC.md 6, issue 6 items 1 and 3): the parcels of the
 solid cloud move in 3-D inside a 2.5 degree wedge about the x axis, are
 turned back into the meridional plane, and are weighted radially.

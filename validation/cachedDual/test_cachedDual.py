@@ -1,3 +1,5 @@
+# rarefiedMultiphaseFoam. Copyright (C) 2026 The rarefiedMultiphaseFoam authors
+# SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
 """averagingMethod cachedDual (src/solidPhase/submodels/AveragingMethods)
 gives upstream's dual averaging to the bit.
 

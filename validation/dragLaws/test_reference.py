@@ -1,3 +1,5 @@
+# rarefiedMultiphaseFoam. Copyright (C) 2026 The rarefiedMultiphaseFoam authors
+# SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
 """The reference table of Test-dragLaws (applications/test/Test-dragLaws/
 dragLawsReference.H) is what validation/dragLaws/reference.py makes: a
 changed reference is a reviewed commit, never a silent edit."""

@@ -1,4 +1,6 @@
 #!/usr/bin/python3
+# rarefiedMultiphaseFoam. Copyright (C) 2026 The rarefiedMultiphaseFoam authors
+# SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
 """Parity of rarefiedMultiphaseFoam with stock dsmcFoam on dsmcFoam's tutorials.
 
 For each case (copied from the OpenFOAM tutorials of the SDK), meshed with

@@ -1,3 +1,5 @@
+# rarefiedMultiphaseFoam. Copyright (C) 2026 The rarefiedMultiphaseFoam authors
+# SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
 """Parity with stock dsmcFoam on its four tutorials (see parity.py):
 exact reproduction with the same random stream, and agreement within the
 noise of a six-seed ensemble for an independent-stream and a 2-rank METIS

@@ -1,3 +1,5 @@
+# rarefiedMultiphaseFoam. Copyright (C) 2026 The rarefiedMultiphaseFoam authors
+# SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
 """Free-molecular gas-grain coupling, interphaseCoupling oneWay (issue 5,
 items 2 and 7; SPEC.md 4.2): the force and heat the DSMC gas gives a
 grain held in it, against the analytic free-molecular values, end to end

@@ -1,3 +1,5 @@
+# rarefiedMultiphaseFoam. Copyright (C) 2026 The rarefiedMultiphaseFoam authors
+# SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
 """With gas present, the grains' carrier fields come from the gas (issue 3,
 item 2): tutorials/gas/impingingStream with a cloud of resting grains (no
 forces, every MPPIC model off), 5 steps.  Expected:

@@ -1,3 +1,5 @@
+# rarefiedMultiphaseFoam. Copyright (C) 2026 The rarefiedMultiphaseFoam authors
+# SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
 """Bad input stops the programs with a FatalIOError that names the file, the
 keyword, the bad value and the valid range or choices (end to end, on a copy
 of tutorials/gas/impingingStream)."""

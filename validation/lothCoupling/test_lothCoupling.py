@@ -1,3 +1,5 @@
+# rarefiedMultiphaseFoam. Copyright (C) 2026 The rarefiedMultiphaseFoam authors
+# SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
 """Loth coupling and the adaptive switch (issue 5, items 4, 5 and 9;
 SPEC.md 4.5, 4.6), end to end on the solver.
 

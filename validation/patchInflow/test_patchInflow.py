@@ -1,3 +1,5 @@
+# rarefiedMultiphaseFoam. Copyright (C) 2026 The rarefiedMultiphaseFoam authors
+# SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
 """PatchInflow (issue 6, item 2): inflow through one patch with a radial
 profile of n, T and U, for a gas with rotational energy (water vapour,
 SPEC.md 7.2, mixed here with argon to exercise the composition).

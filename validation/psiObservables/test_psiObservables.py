@@ -1,3 +1,5 @@
+# rarefiedMultiphaseFoam. Copyright (C) 2026 The rarefiedMultiphaseFoam authors
+# SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
 """Plume-surface interaction observables (issue 6, item 5; rmf/psi.py) on a
 synthetic case with known answers.
 

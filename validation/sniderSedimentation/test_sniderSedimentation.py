@@ -1,3 +1,5 @@
+# rarefiedMultiphaseFoam. Copyright (C) 2026 The rarefiedMultiphaseFoam authors
+# SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
 """Snider sedimentation (issue 3): reduced in ./Alltest, full-size with
 ./Alltest --long.  Checks and tolerances: rmf.snider; runs: validate.py."""
 

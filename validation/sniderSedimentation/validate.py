@@ -1,3 +1,5 @@
+# rarefiedMultiphaseFoam. Copyright (C) 2026 The rarefiedMultiphaseFoam authors
+# SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
 """Snider sedimentation validation (SPEC.md 7.1, issue 3).
 
     /usr/bin/python3 validate.py [--full] [--build DIR]

@@ -1,3 +1,5 @@
+# rarefiedMultiphaseFoam. Copyright (C) 2026 The rarefiedMultiphaseFoam authors
+# SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
 """Solid parcels survive a restart with every property (issue 3, item 1),
 and zonalGravity switches gravity off inside a cellZone (item 5).
 

@@ -1,3 +1,5 @@
+# rarefiedMultiphaseFoam. Copyright (C) 2026 The rarefiedMultiphaseFoam authors
+# SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
 """Two-way free-molecular coupling, interphaseCoupling twoWayDirect and
 twoWayIndirect (issue 5, item 3; SPEC.md 4.3, 4.4 and section 8's
 "thermal and momentum relaxation of gas + dust in a closed periodic box"),

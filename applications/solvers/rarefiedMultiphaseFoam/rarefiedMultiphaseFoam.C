@@ -1,5 +1,7 @@
 /*---------------------------------------------------------------------------*\
   rarefiedMultiphaseFoam
+  Copyright (C) 2026 The rarefiedMultiphaseFoam authors
+  SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
 
 Application
     rarefiedMultiphaseFoam
@@ -37,7 +39,7 @@ Description
                                   (SPEC.md section 4, keyword
                                   interphaseCoupling); the carrier fields
                                   (gasCarrierFields) are copied from that
-                                  sample; then solidCloud::evolve:
+                                  sample; then basicSolidCloud::evolve:
                                   injection, forces, MPPIC / stochastic
                                   collisions, parcel move with walls
       5. two-way gas update       the coupling model's coupleGas:
@@ -55,7 +57,7 @@ Description
 
 #include "fvCFD.H"
 #include "gasCloud.H"
-#include "solidCloud.H"
+#include "basicSolidCloud.H"
 #include "InterphaseCouplingModel.H"
 #include "gasCarrierFields.H"
 #include "progressReport.H"

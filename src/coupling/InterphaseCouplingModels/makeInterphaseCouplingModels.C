@@ -1,13 +1,15 @@
 /*---------------------------------------------------------------------------*\
   rarefiedMultiphaseFoam
+  Copyright (C) 2026 The rarefiedMultiphaseFoam authors
+  SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
 
 Description
     Registers the interphase coupling models (SPEC.md section 4) for
-    solidCloud, with gasCloud as the gas.
+    basicSolidCloud, with gasCloud as the gas.
 
 \*---------------------------------------------------------------------------*/
 
-#include "solidCloud.H"
+#include "basicSolidCloud.H"
 #include "gasCloud.H"
 
 #include "InterphaseCouplingModel.H"
@@ -20,14 +22,14 @@ Description
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
-makeInterphaseCouplingModel(solidCloud);
+makeInterphaseCouplingModel(basicSolidCloud);
 
-makeInterphaseCouplingModelType(NoInterphaseCoupling, solidCloud);
-makeInterphaseCouplingModelType(OneWayCoupling, solidCloud);
-makeInterphaseCouplingModelType(LothCoupling, solidCloud);
-makeInterphaseCouplingModelType(AdaptiveCoupling, solidCloud);
-makeInterphaseCouplingModelType(TwoWayDirectCoupling, solidCloud);
-makeInterphaseCouplingModelType(TwoWayIndirectCoupling, solidCloud);
+makeInterphaseCouplingModelType(NoInterphaseCoupling, basicSolidCloud);
+makeInterphaseCouplingModelType(OneWayCoupling, basicSolidCloud);
+makeInterphaseCouplingModelType(LothCoupling, basicSolidCloud);
+makeInterphaseCouplingModelType(AdaptiveCoupling, basicSolidCloud);
+makeInterphaseCouplingModelType(TwoWayDirectCoupling, basicSolidCloud);
+makeInterphaseCouplingModelType(TwoWayIndirectCoupling, basicSolidCloud);
 
 
 // ************************************************************************* //

@@ -1,3 +1,5 @@
+# rarefiedMultiphaseFoam. Copyright (C) 2026 The rarefiedMultiphaseFoam authors
+# SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
 """Field maps of a 2-D case as a PNG picture.
 
     /usr/bin/python3 -m rmf.fieldmap CASE [--time T] [--fields F ...]

@@ -1,3 +1,5 @@
+# rarefiedMultiphaseFoam. Copyright (C) 2026 The rarefiedMultiphaseFoam authors
+# SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
 """Reading OpenFOAM ASCII fields and running OpenFOAM applications on a case.
 
 Only what the project's tests, benchmarks and plots need: internal fields

@@ -1,3 +1,5 @@
+# rarefiedMultiphaseFoam. Copyright (C) 2026 The rarefiedMultiphaseFoam authors
+# SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
 """Mean grain speed and temperature against time, one curve per case.
 
     /usr/bin/python3 -m rmf.grainseries CASE [CASE ...] [--labels L ...]

@@ -1,3 +1,5 @@
+# rarefiedMultiphaseFoam. Copyright (C) 2026 The rarefiedMultiphaseFoam authors
+# SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
 """Plume-surface interaction observables (SPEC.md 7.2; issue 6, item 5).
 
     /usr/bin/python3 -m rmf.psi CASE [--output DIR] [--times T ...]

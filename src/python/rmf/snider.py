@@ -1,3 +1,5 @@
+# rarefiedMultiphaseFoam. Copyright (C) 2026 The rarefiedMultiphaseFoam authors
+# SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
 """Snider sedimentation (SPEC.md section 7.1): profiles, checks and plots.
 
     /usr/bin/python3 -m rmf.snider check CASE [--plot FILE.png]

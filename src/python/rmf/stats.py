@@ -1,3 +1,5 @@
+# rarefiedMultiphaseFoam. Copyright (C) 2026 The rarefiedMultiphaseFoam authors
+# SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
 """Statistical comparison of a DSMC run with an ensemble of independent runs
 of the same case, the tolerance being set by the ensemble's own spread.
 

@@ -1,3 +1,5 @@
+# rarefiedMultiphaseFoam. Copyright (C) 2026 The rarefiedMultiphaseFoam authors
+# SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
 """dustCloudStream, reduced (200 steps, 0.2 ms, written every 100), every
 coupling type of Allrun-types (its `types=` line), each through the case's
 Allrun; a type the solver does not know is skipped.

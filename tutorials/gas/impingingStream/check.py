@@ -1,4 +1,6 @@
 #!/usr/bin/python3
+# rarefiedMultiphaseFoam. Copyright (C) 2026 The rarefiedMultiphaseFoam authors
+# SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
 """Regression checks of tutorials/gas/impingingStream (run by Allrun and by
 test_impingingStream.py); prints PASS/FAIL lines with the measured figures.
 

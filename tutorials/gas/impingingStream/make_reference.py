@@ -1,4 +1,6 @@
 #!/usr/bin/python3
+# rarefiedMultiphaseFoam. Copyright (C) 2026 The rarefiedMultiphaseFoam authors
+# SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
 """Makes reference.json: surface loads of the reduced impingingStream run
 (reduced.py) for randomSeed 1..K, the ensemble check.py's prediction
 interval comes from.  A changed reference is a reviewed commit with a

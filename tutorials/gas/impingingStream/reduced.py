@@ -1,3 +1,5 @@
+# rarefiedMultiphaseFoam. Copyright (C) 2026 The rarefiedMultiphaseFoam authors
+# SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
 """Reduced settings of impingingStream for the test suite and its stored
 reference: 600 steps instead of 1200, averages from 0.3 ms, serial."""
 

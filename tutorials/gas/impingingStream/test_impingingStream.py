@@ -1,3 +1,5 @@
+# rarefiedMultiphaseFoam. Copyright (C) 2026 The rarefiedMultiphaseFoam authors
+# SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
 """impingingStream, reduced (reduced.py), serial, upstream's random stream:
 the checks of check.py (analytic inflow rate, account of simulators,
 surface loads within the stored reference's prediction interval)."""

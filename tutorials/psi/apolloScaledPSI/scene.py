@@ -1,3 +1,5 @@
+# rarefiedMultiphaseFoam. Copyright (C) 2026 The rarefiedMultiphaseFoam authors
+# SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
 """The scene at a few written times: gas number density (batch mean,
 log colour) on the meridional plane, nozzle on top and the lunar surface
 at the bottom, with the grain parcels as dots (a random subset).

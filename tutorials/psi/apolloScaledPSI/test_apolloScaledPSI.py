@@ -1,3 +1,5 @@
+# rarefiedMultiphaseFoam. Copyright (C) 2026 The rarefiedMultiphaseFoam authors
+# SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
 """apolloScaledPSI, reduced: the hybrid variant with the demo settings for
 240 steps (12 us, the jet reaches the surface after ~7 us), 3000 parcels,
 written every 120 steps, through the case's Allrun, serially and on 2 METIS

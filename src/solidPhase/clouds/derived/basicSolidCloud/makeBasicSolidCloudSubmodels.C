@@ -1,14 +1,16 @@
 /*---------------------------------------------------------------------------*\
   rarefiedMultiphaseFoam
+  Copyright (C) 2026 The rarefiedMultiphaseFoam authors
+  SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
 
 Description
-    Registers, for solidCloud, upstream's kinematic and MPPIC submodels (as
+    Registers, for basicSolidCloud, upstream's kinematic and MPPIC submodels (as
     MPPICFoam's cloud has them) and our own: the zonalGravity force and the
     NTCHardSphere stochastic collision model.
 
 \*---------------------------------------------------------------------------*/
 
-#include "solidCloud.H"
+#include "basicSolidCloud.H"
 
 #include "makeParcelCloudFunctionObjects.H"
 
@@ -31,21 +33,21 @@ Description
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
-makeParcelCloudFunctionObjects(solidCloud);
+makeParcelCloudFunctionObjects(basicSolidCloud);
 
-makeParcelForces(solidCloud);
-makeParcelDispersionModels(solidCloud);
-makeParcelInjectionModels(solidCloud);
-makeParcelPatchInteractionModels(solidCloud);
-makeParcelStochasticCollisionModels(solidCloud);
-makeParcelSurfaceFilmModels(solidCloud);
+makeParcelForces(basicSolidCloud);
+makeParcelDispersionModels(basicSolidCloud);
+makeParcelInjectionModels(basicSolidCloud);
+makeParcelPatchInteractionModels(basicSolidCloud);
+makeParcelStochasticCollisionModels(basicSolidCloud);
+makeParcelSurfaceFilmModels(basicSolidCloud);
 
-makeMPPICParcelDampingModels(solidCloud);
-makeMPPICParcelIsotropyModels(solidCloud);
-makeMPPICParcelPackingModels(solidCloud);
+makeMPPICParcelDampingModels(basicSolidCloud);
+makeMPPICParcelIsotropyModels(basicSolidCloud);
+makeMPPICParcelPackingModels(basicSolidCloud);
 
-makeParticleForceModelType(ZonalGravityForce, solidCloud);
-makeStochasticCollisionModelType(NTCHardSphere, solidCloud);
+makeParticleForceModelType(ZonalGravityForce, basicSolidCloud);
+makeStochasticCollisionModelType(NTCHardSphere, basicSolidCloud);
 
 
 // ************************************************************************* //
