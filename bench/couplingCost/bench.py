@@ -32,7 +32,7 @@ step (N = --steps):
 
 i.e. r_model is the time the coupling model adds to a step over none
 (which runs the solid phase and the per-step sampling pass of the gas) divided
-by the time of the DSMC step.  Target (issue 5 item 8): the coupling "no
+by the time of the DSMC step.  Target: the coupling "no
 more than comparable to the DSMC step", ratio <= 1; a ratio above is
 printed as MISSES TARGET.  oneWay's sum is O(simulators x parcels) per
 cell, so its ratio grows with the parcels per cell.  Exit status 0 unless

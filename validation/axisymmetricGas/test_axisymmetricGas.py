@@ -1,6 +1,6 @@
 # rarefiedMultiphaseFoam. Copyright (C) 2026 The rarefiedMultiphaseFoam authors
 # SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
-"""Axisymmetric gas (SPEC.md 6, issue 6 item 3): argon at rest (1e20 m^-3,
+"""Axisymmetric gas (doc/physics.md 6): argon at rest (1e20 m^-3,
 300 K) in a 2.5 degree wedge about the x axis (x, r in [0, 0.05] m, 10 x 10
 cells, Maxwellian walls at 300 K) stays uniform in density and at the wall
 temperature, with radial weighting (maxRadialWeight 10) and without; with the

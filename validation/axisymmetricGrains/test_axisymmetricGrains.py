@@ -1,6 +1,6 @@
 # rarefiedMultiphaseFoam. Copyright (C) 2026 The rarefiedMultiphaseFoam authors
 # SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
-"""Axisymmetric grains (SPEC.md 6, issue 6 items 1 and 3): the parcels of the
+"""Axisymmetric grains (doc/physics.md 6): the parcels of the
 solid cloud move in 3-D inside a 2.5 degree wedge about the x axis, are
 turned back into the meridional plane, and are weighted radially.
 
@@ -39,7 +39,7 @@ turned back into the meridional plane, and are weighted radially.
    validation/axisymmetricGas, maxRadialWeight 10 for the gas and the
    grains), interphaseCoupling oneWay, 1000 steps of 5 us.  Their heating
    rate in each fifth of the radius is the free-molecular
-   pi R^2 n <c> 2 k (T_g - T_p)/(m_p c_p) (SPEC.md 4.2, eps 0, alpha_T 1;
+   pi R^2 n <c> 2 k (T_g - T_p)/(m_p c_p) (doc/physics.md 4.2, eps 0, alpha_T 1;
    validation/freeMolecularCoupling) within 2 % (that test's tolerance;
    measured -0.5 to -0.6 %, standard errors 0.06-0.15 %): a sum without
    the gas's weight factor gives up to RWF = 10 times less at the outer

@@ -12,7 +12,7 @@ is committed; validation/dragLaws/test_reference.py fails when it no longer
 matches what this script makes.  Changing a reference value is a reviewed
 commit with a reason (STYLE.md).
 
-Free-molecular sphere drag C_D(s): not from the closed form of SPEC.md 4.2
+Free-molecular sphere drag C_D(s): not from the closed form of doc/physics.md 4.2
 but by integrating over the sphere the momentum flux of a drifting
 Maxwellian gas onto a flat surface element with diffuse re-emission at the
 wall temperature (pressure and shear of the element from kinetic theory:
@@ -20,7 +20,7 @@ incident flux of a drifting Maxwellian, half-Maxwellian re-emission; e.g.
 Schaaf & Chambre 1958, Bird 1994 ch. 7).  Composite Simpson rule in the
 polar angle; the closed form is printed next to it as a cross-check.
 
-Loth (2008) drag and lift: SPEC.md 4.5 typed here again, term by term.
+Loth (2008) drag and lift: doc/physics.md 4.5 typed here again, term by term.
 """
 
 import math
@@ -62,7 +62,7 @@ def cd_fm_integrated(s, tw_by_tg, n=4000):
 
 
 def cd_fm_closed(s, tp_by_tg):
-    """SPEC.md 4.2 closed form (for the cross-check column only)."""
+    """doc/physics.md 4.2 closed form (for the cross-check column only)."""
     s2 = s*s
     return (math.exp(-s2)*(2*s2 + 1)/(SQRT_PI*s**3)
             + math.erf(s)*(4*s2*s2 + 4*s2 - 1)/(2*s2*s2)
@@ -70,7 +70,7 @@ def cd_fm_closed(s, tp_by_tg):
 
 
 # ---------------------------------------------------------------------------
-# Loth (2008), SPEC.md 4.5
+# Loth (2008), doc/physics.md 4.5
 
 def loth_cd(re, ma, gamma, tp_by_tg):
     if re < 45:
@@ -99,7 +99,7 @@ def loth_cd(re, ma, gamma, tp_by_tg):
 
 
 def loth_cl(re, omega):
-    """C_L(Re, omega*) with Omega* = omega*/2 (SPEC.md 4.5)."""
+    """C_L(Re, omega*) with Omega* = omega*/2 (doc/physics.md 4.5)."""
     if omega <= 0:
         return 0.0
     eps = math.sqrt(omega/re)

@@ -1,7 +1,6 @@
 # rarefiedMultiphaseFoam. Copyright (C) 2026 The rarefiedMultiphaseFoam authors
 # SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
-"""Free-molecular gas-grain coupling, interphaseCoupling oneWay (issue 5,
-items 2 and 7; SPEC.md 4.2): the force and heat the DSMC gas gives a
+"""Free-molecular gas-grain coupling, interphaseCoupling oneWay (items 2 and 7; doc/physics.md 4.2): the force and heat the DSMC gas gives a
 grain held in it, against the analytic free-molecular values, end to end
 on the solver.
 
@@ -29,9 +28,9 @@ the ten interval averages (sigma = sd/sqrt(10)).
 1. Drag (argon, eps = 0, alpha_T = 1, T_p = 300 K = T_g) at speed ratios
    s = |U|/sqrt(2kT/m) = 0.5, 1, 2, 5: the force along U divided by
    1/2 rho |U|^2 pi R^2 must be the free-molecular sphere C_D(s, T_p/T_g)
-   of SPEC.md 4.2 (validation/dragLaws/reference.py's closed form, which
+   of doc/physics.md 4.2 (validation/dragLaws/reference.py's closed form, which
    Test-dragLaws checks against dragLaws::freeMolecularCd) within 2 %
-   (the issue's 2-3 %, its tighter end); and within 5 sigma of the
+   (the verification set's 2-3 %, doc/physics.md 8, its tighter end); and within 5 sigma of the
    noise, so a bias well below 2 % is still caught when the noise allows.
    The force across U must be below 1 % of the drag.
 
@@ -39,7 +38,7 @@ the ten interval averages (sigma = sd/sqrt(10)).
    eps = 0.1, alpha_T = 0.9 (so that the factor (1 - eps) alpha_T = 0.81
    is exercised), for argon (zeta = 0) and nitrogen (zeta = 2, Larsen-
    Borgnakke exchange keeps its rotational energy in equilibrium).  The
-   expectation of SPEC.md 4.2's Q over a Maxwellian at rest with number
+   expectation of doc/physics.md 4.2's Q over a Maxwellian at rest with number
    density n (the sum (W_g/V) sum_j becomes n E[.]): with w the molecular
    velocity, E|w| = <c> = sqrt(8 k T_g/(pi m)), E[|w| m |w|^2/2] =
    2 k T_g <c> (the flux-weighted mean translational energy) and
@@ -59,7 +58,7 @@ the ten interval averages (sigma = sd/sqrt(10)).
    by O(s^2) ~ 1e-4, neglected.  Tolerance 2 % and 5 sigma, as for the
    drag.
 
-3. Bad input (issue 5, item 9): an unknown interphaseCoupling name or a
+3. Bad input: an unknown interphaseCoupling name or a
    missing keyword (required when gas is present) stops the solver with a
    FatalIOError naming the file and keyword (and listing the valid
    names).
@@ -68,7 +67,7 @@ the ten interval averages (sigma = sd/sqrt(10)).
 
 5. A light grain released in the uniform stream relaxes to the gas's
    velocity and temperature at the analytic free-molecular rates of the
-   linearised SPEC.md 4.2 (issue 5, item 7; test_light_grain_relaxation,
+   linearised doc/physics.md 4.2 (test_light_grain_relaxation,
    whose docstring derives the rates and the tolerance).
 
 The measured figures are printed (PASS/FAIL lines); the whole directory
@@ -96,7 +95,7 @@ T_GAS = 300.0               # [K]
 D_GRAIN = 1e-5              # [m]
 AREA = math.pi*(D_GRAIN/2)**2
 STEPS, WRITE_EVERY = 1000, 100
-TOL = 0.02                  # the issue's 2-3 %, tighter end
+TOL = 0.02                  # doc/physics.md 8: 2-3 %, tighter end
 N_SIGMA = 5                 # noise bound
 
 
@@ -238,7 +237,7 @@ def test_missing_coupling_keyword(filled):
 
 
 # ---------------------------------------------------------------------------
-# 4. Mean free path and grain Knudsen number (SPEC.md section 2)
+# 4. Mean free path and grain Knudsen number (doc/physics.md section 2)
 
 D_REF, T_REF = 4.17e-10, 273.0     # argon's VHS diameter and Tref (box/constant)
 
@@ -288,7 +287,7 @@ def test_mean_free_path(omega):
 
 
 # ---------------------------------------------------------------------------
-# 5. A light grain relaxing in a uniform stream (issue 5, item 7)
+# 5. A light grain relaxing in a uniform stream
 
 def test_light_grain_relaxation():
     """Two light grains (d = 10 um, rho_p = 0.75 kg/m^3, c_p = 220 J/kg/K,
@@ -297,7 +296,7 @@ def test_light_grain_relaxation():
     U_g/sqrt(2kT_g/m) = 0.1, T_g = 300 K), eps = 0, alpha_T = 1:
       A  released at rest at T_p = T_g: its velocity relaxes,
       B  moving with the stream at T_p = 200 K: its temperature relaxes.
-    Linearised SPEC.md 4.2 for a drifting Maxwellian with small slip
+    Linearised doc/physics.md 4.2 for a drifting Maxwellian with small slip
     u = U_g - v_p (E[w |w|] = (4/3) <c> u + O(u^3), E[w] = u; with
     sqrt(2 k T_p/m) = (sqrt(pi)/2) <c_p>):
         F = pi R^2 n m_g u <c> [ (4/3)(1 + 4/9 (1-eps)(1-alpha_T))

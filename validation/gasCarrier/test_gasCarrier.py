@@ -1,7 +1,6 @@
 # rarefiedMultiphaseFoam. Copyright (C) 2026 The rarefiedMultiphaseFoam authors
 # SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
-"""With gas present, the grains' carrier fields come from the gas (issue 3,
-item 2): tutorials/gas/impingingStream with a cloud of resting grains (no
+"""With gas present, the grains' carrier fields come from the gas: tutorials/gas/impingingStream with a cloud of resting grains (no
 forces, every MPPIC model off), 5 steps.  Expected:
 - the gas mass the grains see is the gas's own: sum(rho.gas V) equals
   nEquivalentParticles x simulators x m(N2) of the written dsmc cloud

@@ -1,6 +1,6 @@
 # rarefiedMultiphaseFoam. Copyright (C) 2026 The rarefiedMultiphaseFoam authors
 # SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
-"""NTC hard-sphere grain collisions (issue 4): kinetic-theory verification
+"""NTC hard-sphere grain collisions: kinetic-theory verification
 of the NTCHardSphere stochastic collision model, end to end on the solver.
 
 Case (granularGas/): a fully periodic (cyclic) cube of 0.1 m, 4 x 4 x 4

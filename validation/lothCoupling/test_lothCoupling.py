@@ -1,7 +1,7 @@
 # rarefiedMultiphaseFoam. Copyright (C) 2026 The rarefiedMultiphaseFoam authors
 # SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
-"""Loth coupling and the adaptive switch (issue 5, items 4, 5 and 9;
-SPEC.md 4.5, 4.6), end to end on the solver.
+"""Loth coupling and the adaptive switch (
+doc/physics.md 4.5, 4.6), end to end on the solver.
 
 1. interphaseCoupling Loth with a prescribed uniform gas, no DSMC (no
    constant/dsmcProperties): one light grain released at rest in a
@@ -361,7 +361,7 @@ BAD_TABLES = {
 
 @pytest.mark.parametrize("name", list(BAD_TABLES))
 def test_prescribed_table_bad_input(vacuum, name):
-    """Bad tables (issue 5 item 9): FatalIOError naming the file
+    """Bad tables: FatalIOError naming the file
     (grainsProperties), the keyword, the bad value and the valid range."""
     rows, extra, texts = BAD_TABLES[name]
     case = foam.copy_case(vacuum, os.path.join(BUILD, "badTable_" + name))
@@ -487,7 +487,7 @@ def test_loth_bad_averaging_steps():
 
 
 # ---------------------------------------------------------------------------
-# adaptive (SPEC.md 4.6)
+# adaptive (doc/physics.md 4.6)
 
 @pytest.mark.parametrize("KnSwitch,fm", [(None, 0.5), (1e5, 0.0), (1.0, 1.0)])
 def test_adaptive_fractions(KnSwitch, fm):

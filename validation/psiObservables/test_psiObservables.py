@@ -1,6 +1,6 @@
 # rarefiedMultiphaseFoam. Copyright (C) 2026 The rarefiedMultiphaseFoam authors
 # SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
-"""Plume-surface interaction observables (issue 6, item 5; rmf/psi.py) on a
+"""Plume-surface interaction observables (rmf.psi) on a
 synthetic case with known answers.
 
 Case: a 5 degree wedge about the x axis, x in [0, 20] mm (nozzle at 0,

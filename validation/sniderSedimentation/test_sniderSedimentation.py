@@ -1,6 +1,6 @@
 # rarefiedMultiphaseFoam. Copyright (C) 2026 The rarefiedMultiphaseFoam authors
 # SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
-"""Snider sedimentation (issue 3): reduced in ./Alltest, full-size with
+"""Snider sedimentation: reduced in ./Alltest, full-size with
 ./Alltest --long.  Checks and tolerances: rmf.snider; runs: validate.py."""
 
 import os
@@ -50,7 +50,7 @@ def test_variants_picture(variant_results):
 
 
 def test_stochastic_overpacks(variant_results):
-    """SPEC.md 7.1: NTC collisions alone know only binary collisions and
+    """doc/physics.md 7.1: NTC collisions alone know only binary collisions and
     let the bed pack beyond what MPPIC's stress allows: its bottom layer
     exceeds the layer bound that the MPPIC run keeps, parcels conserved."""
     passed, s = variant_results[0]["stochastic"]

@@ -1,6 +1,6 @@
 # rarefiedMultiphaseFoam. Copyright (C) 2026 The rarefiedMultiphaseFoam authors
 # SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
-"""Snider sedimentation validation (SPEC.md 7.1, issue 3).
+"""Snider sedimentation validation (doc/physics.md 7.1).
 
     /usr/bin/python3 validate.py [--full] [--build DIR]
 
@@ -14,7 +14,7 @@ stated there) and draws sniderSedimentation.png: alpha(z) at 0.1, 0.15,
 0.2 and 0.6 s for the serial and the parallel run, and e = 0.85 against
 e = 0.5 at 0.2 s.
 
-With --variants (issue 4) it also runs, side by side to 0.6 s, the grain
+With --variants it also runs, side by side to 0.6 s, the grain
 collision variants of VARIANTS (stochastic NTC collisions instead of MPPIC;
 the NTC/MPPIC hybrid) and draws sniderVariants.png: their alpha(z) at
 0.6 s beside the MPPIC serial run's, with each run's largest alpha.
@@ -41,7 +41,7 @@ PROPS = "constant/grainsProperties"
 FULL_PARCELS, FULL_WEIGHT = 162232, 749
 REDUCTION = 4
 
-# Grain-grain collision variants of the tutorial (SPEC.md 7.1, 5.2, 5.5):
+# Grain-grain collision variants of the tutorial (doc/physics.md 7.1, 5.2, 5.5):
 # grainsProperties entries each sets
 VARIANTS = {
     # NTC hard-sphere collisions alone: no packing, no isotropy
@@ -49,7 +49,7 @@ VARIANTS = {
                    "subModels/isotropyModel": "none",
                    "subModels/stochasticCollisionModel": "NTCHardSphere"},
     # NTC in cells below alphaSwitch (binary collisions valid below 0.1,
-    # SPEC.md 5.2), MPPIC as in the tutorial
+    # doc/physics.md 5.2), MPPIC as in the tutorial
     "hybrid": {"subModels/stochasticCollisionModel": "NTCHardSphere",
                "subModels/NTCHardSphereCoeffs/alphaSwitch": 0.1},
 }
@@ -184,7 +184,7 @@ def main(argv=None):
     parser.add_argument("--build", default=BUILD)
     parser.add_argument("--parallel-case", help="finished 2-rank run to reuse")
     parser.add_argument("--variants", action="store_true",
-                        help="also the grain-collision variants (issue 4)")
+                        help="also the grain-collision variants")
     args = parser.parse_args(argv)
     ok, figures = validate(args.full, args.build, args.parallel_case)
     if args.variants:

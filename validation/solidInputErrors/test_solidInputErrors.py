@@ -1,6 +1,6 @@
 # rarefiedMultiphaseFoam. Copyright (C) 2026 The rarefiedMultiphaseFoam authors
 # SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
-"""Bad solid-phase input (issue 3, item 8) stops the initialiser and the
+"""Bad solid-phase input stops the initialiser and the
 solver with a FatalIOError naming the file, the keyword, the bad value and
 the valid range or choices (end to end, on a copy of the Snider tutorial's
 set-up, with a small parcel count so that the good case starts at once)."""

@@ -1,6 +1,6 @@
 # rarefiedMultiphaseFoam. Copyright (C) 2026 The rarefiedMultiphaseFoam authors
 # SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
-"""Solid parcels survive a restart with every property (issue 3, item 1),
+"""Solid parcels survive a restart with every property,
 and zonalGravity switches gravity off inside a cellZone (item 5).
 
 A dilute copy of the Snider set-up (2000 parcels, alpha ~ 0.004) falls

@@ -18,7 +18,7 @@ Description
     keyword, reproduces dsmcFoam byte for byte.  Without gas (vacuum) the
     grains run alone and no gas work is done.
 
-    One step of length deltaT (SPEC.md section 1), and where each part lives:
+    One step of length deltaT (doc/physics.md section 1), and where each part lives:
 
       1. gas inflow               gasCloud::evolve (InflowBoundaryModel)
       2. gas move                 gasCloud::evolve; in the axisymmetric
@@ -36,7 +36,7 @@ Description
                                   in each cell (the one pass over the gas
                                   for steps 4-5: gasNow) and applies the
                                   gas's force and heat to the parcels
-                                  (SPEC.md section 4, keyword
+                                  (doc/physics.md section 4, keyword
                                   interphaseCoupling); the carrier fields
                                   (gasCarrierFields) are copied from that
                                   sample; then basicSolidCloud::evolve:

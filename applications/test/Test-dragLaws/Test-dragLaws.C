@@ -8,7 +8,7 @@ Application
 
 Description
     Unit test of the drag, lift and heat-transfer laws (Foam::dragLaws,
-    librarefiedCoupling; SPEC.md 4.2, 4.5): limits (Stokes, free-molecular,
+    librarefiedCoupling; doc/physics.md 4.2, 4.5): limits (Stokes, free-molecular,
     Newton, Clift-Gauvin at Ma = 0, Nusselt continuum and free-molecular),
     the jumps at the branch points Re = 45, Ma = 0.89, Ma = 1.45, and values
     against dragLawsReference.H, made apart from the C++ by
@@ -107,7 +107,7 @@ int main(int argc, char *argv[])
     const scalar nextBelow45 = std::nextafter(45.0, 0.0);
 
     // ---------------------------------------------------------------------
-    Info<< nl << "Free-molecular sphere C_D(s), SPEC.md 4.2" << nl;
+    Info<< nl << "Free-molecular sphere C_D(s), doc/physics.md 4.2" << nl;
 
     // Reference: surface integral of the kinetic momentum flux (Simpson,
     // 4000 intervals), which matches the closed form to 2.4e-13 in Python
@@ -227,7 +227,7 @@ int main(int argc, char *argv[])
         lothCd(1e4, 1e-3, 1.4, 1), lothCd(1e4, 0, 1.4, 1), 1e-6
     );
 
-    // Clift-Gauvin at Ma = 0: C_M = 1.0000013, H_M = 0.99950 (SPEC.md 4.5)
+    // Clift-Gauvin at Ma = 0: C_M = 1.0000013, H_M = 0.99950 (doc/physics.md 4.5)
     for (const scalar Re : {45.0, 100.0, 1e3, 1e4, 1e5, 2e5})
     {
         const scalar cliftGauvin =
@@ -278,7 +278,7 @@ int main(int argc, char *argv[])
     }
 
     // Ma = 0.89: G_M's pieces do not meet (0.0432 | -0.0006); the jump of
-    // C_D is the correlation's own, as SPEC.md states it: largest (scanned
+    // C_D is the correlation's own, as doc/physics.md states it: largest (scanned
     // in Re) +12.6 % at Re = 262 and -10.8 % at Re = 8330.  Bound: 13 %
     // (what the formula gives, not "a few percent"; see dragLaws.H and the
     // CHANGELOG)

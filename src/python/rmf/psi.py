@@ -1,6 +1,6 @@
 # rarefiedMultiphaseFoam. Copyright (C) 2026 The rarefiedMultiphaseFoam authors
 # SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
-"""Plume-surface interaction observables (SPEC.md 7.2; issue 6, item 5).
+"""Plume-surface interaction observables (doc/physics.md 7.2).
 
     /usr/bin/python3 -m rmf.psi CASE [--output DIR] [--times T ...]
     /usr/bin/python3 -m rmf.psi --compare CASE1 CASE2 ... [--labels L ...]
@@ -180,7 +180,7 @@ def parcels(case, time, cloud=CLOUD, radial_weight=None):
     or None when the time has no parcel of the cloud.  n: real grains per
     parcel, nParticle; times RWF(r) = 1 + (W - 1) r/R when radial_weight =
     (W, R) is given (parcels weighted by radius implicitly, as the gas's
-    simulators: SPEC.md 6)."""
+    simulators: doc/physics.md 6)."""
     base = os.path.join(case, time, "lagrangian", cloud)
     if not os.path.exists(os.path.join(base, "positions")):
         return None

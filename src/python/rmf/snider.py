@@ -1,13 +1,13 @@
 # rarefiedMultiphaseFoam. Copyright (C) 2026 The rarefiedMultiphaseFoam authors
 # SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
-"""Snider sedimentation (SPEC.md section 7.1): profiles, checks and plots.
+"""Snider sedimentation (doc/physics.md section 7.1): profiles, checks and plots.
 
     /usr/bin/python3 -m rmf.snider check CASE [--plot FILE.png]
     /usr/bin/python3 -m rmf.snider compare CASE_A CASE_B [--time T]
 
 `check` extracts the layer-averaged solid volume fraction alpha(z) (the
 mean of alpha.grains over the cells of each horizontal layer) at the times
-of SPEC.md 7.1, plots them, and applies the checks below, printing
+of doc/physics.md 7.1, plots them, and applies the checks below, printing
 PASS/FAIL with the measured figure; the exit status is non-zero on a
 failure.  `compare` checks that two runs of the case (serial and
 decomposed) give the same alpha(z).
@@ -18,7 +18,7 @@ Tolerances and where they come from:
   temperature, specific heat, specular fraction and accommodation come
   through the run (and, decomposed, the processor transfers) unchanged.
 - settled bed at 0.6 s: the mean of alpha(z) over the layers below
-  0.14 m is alphaPacked = 0.6 within 0.03 (SPEC.md 7.1 / the issue); the
+  0.14 m is alphaPacked = 0.6 within 0.03 (doc/physics.md 7.1); the
   layers above 0.16 m hold alpha < 0.01 (clear top).
 - over-packing, at every written time: the layer-averaged alpha(z) stays
   at or below LAYER_MAX_BOUND = 0.7 (alphaPacked + 0.1) and no cell

@@ -14,7 +14,7 @@ Checks (physical, each able to fail):
 
       dv/dt = (3/4) C_D rho_g (U - v)^2/(rho_p d),
 
-  C_D the free-molecular sphere's (SPEC.md 4.2; validation/dragLaws/
+  C_D the free-molecular sphere's (doc/physics.md 4.2; validation/dragLaws/
   reference.py, independent of the C++) for the free-molecular models
   (oneWay, twoWayDirect, twoWayIndirect, adaptive: Kn_p = lambda/d ~ 3800
   >> KnSwitch) and Loth's for
