@@ -1,0 +1,59 @@
+/*---------------------------------------------------------------------------*\
+  rarefiedMultiphaseFoam
+  Copyright (C) 2026 The rarefiedMultiphaseFoam authors
+  SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
+\*---------------------------------------------------------------------------*/
+
+#include "grainPhase.H"
+#include "IOdictionary.H"
+
+// * * * * * * * * * * * * * * * * * Selector  * * * * * * * * * * * * * * * //
+
+Foam::autoPtr<Foam::grainPhase> Foam::grainPhase::New
+(
+    const word& cloudName,
+    const fvMesh& mesh,
+    const gasCarrierFields& carrier,
+    const dimensionedVector& g,
+    const bool gasPresent
+)
+{
+    // Read unregistered: the cloud registers the same dictionary itself
+    const IOdictionary dict
+    (
+        IOobject
+        (
+            cloudName + "Properties",
+            mesh.time().constant(),
+            mesh,
+            IOobject::MUST_READ,
+            IOobject::NO_WRITE,
+            false
+        )
+    );
+
+    const word kind
+    (
+        dict.getOrDefault<word>("cloudType", "basicSolidCloud")
+    );
+
+    Info<< "Selecting grain cloud " << kind << endl;
+
+    auto cstrIter = dictionaryConstructorTablePtr_->cfind(kind);
+
+    if (!cstrIter.found())
+    {
+        FatalIOErrorInLookup
+        (
+            dict,
+            "cloudType",
+            kind,
+            *dictionaryConstructorTablePtr_
+        ) << exit(FatalIOError);
+    }
+
+    return cstrIter()(cloudName, carrier, g, gasPresent);
+}
+
+
+// ************************************************************************* //

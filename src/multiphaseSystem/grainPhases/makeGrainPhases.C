@@ -1,0 +1,19 @@
+/*---------------------------------------------------------------------------*\
+  rarefiedMultiphaseFoam
+  Copyright (C) 2026 The rarefiedMultiphaseFoam authors
+  SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
+
+Description
+    Registers the grain cloud kinds selectable by cloudType (grainPhase).
+
+\*---------------------------------------------------------------------------*/
+
+#include "CoupledGrainCloud.H"
+#include "basicSolidCloud.H"
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+makeGrainPhase(basicSolidCloud);
+
+
+// ************************************************************************* //
