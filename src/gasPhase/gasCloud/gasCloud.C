@@ -5,6 +5,8 @@
 \*---------------------------------------------------------------------------*/
 
 #include "gasCloud.H"
+#include "gasCellAverage.H"
+#include "cellFields.H"
 #include "inputChecks.H"
 #include "polyMeshTetDecomposition.H"
 #include "BinaryCollisionModel.H"
@@ -421,6 +423,12 @@ Foam::gasCloud::gasCloud
 }
 
 
+// * * * * * * * * * * * * * * * * Destructor  * * * * * * * * * * * * * * * //
+
+Foam::gasCloud::~gasCloud()
+{}
+
+
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 void Foam::gasCloud::arrive(const label celli)
@@ -509,8 +517,36 @@ void Foam::gasCloud::evolve()
         sampleWeighted();
     }
 
+    sampleCells();
+
     // Inflow is not reported by upstream's model: it is the balance
     account_.closeStep(nBefore, this->size());
+}
+
+
+const Foam::gasCellAverage& Foam::gasCloud::cellState() const
+{
+    return now_();
+}
+
+
+void Foam::gasCloud::sampleCells()
+{
+    if (!now_.valid())
+    {
+        now_.reset(new gasCellAverage(*this, 1));
+        sinceWrite_.reset(new gasCellAverage(*this, 0));
+    }
+
+    now_->sample(*this);
+    sinceWrite_->add(now_());
+
+    if (mesh().time().writeTime())
+    {
+        lambda_ = sinceWrite_->lambda();
+        writeCellField(mesh(), "gas", "lambda", dimLength, lambda_);
+        sinceWrite_->reset();
+    }
 }
 
 

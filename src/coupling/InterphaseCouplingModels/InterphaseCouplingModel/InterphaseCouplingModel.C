@@ -18,7 +18,8 @@ Foam::InterphaseCouplingModel<CloudType>::InterphaseCouplingModel
     CloudSubModelBase<CloudType>(owner),
     momentum_(),
     energy_(),
-    lastWriteTime_(owner.db().time().value())
+    lastWriteTime_(owner.db().time().value()),
+    gas_(nullptr)
 {}
 
 
@@ -40,7 +41,8 @@ Foam::InterphaseCouplingModel<CloudType>::InterphaseCouplingModel
     ),
     momentum_(owner.mesh().nCells(), Zero),
     energy_(owner.mesh().nCells(), Zero),
-    lastWriteTime_(owner.db().time().value())
+    lastWriteTime_(owner.db().time().value()),
+    gas_(nullptr)
 {}
 
 
@@ -78,10 +80,12 @@ void Foam::InterphaseCouplingModel<CloudType>::writeExchange()
 
 
 template<class CloudType>
-void Foam::InterphaseCouplingModel<CloudType>::writeKnudsen()
+void Foam::InterphaseCouplingModel<CloudType>::writeKnudsen
+(
+    const scalarField& lambda
+) const
 {
     const fvMesh& mesh = this->owner().mesh();
-    const scalarField lambda(sinceWrite_->lambda());
 
     // Smallest parcel diameter per cell
     scalarField dMin(mesh.nCells(), GREAT);
@@ -99,10 +103,7 @@ void Foam::InterphaseCouplingModel<CloudType>::writeKnudsen()
         }
     }
 
-    writeCellField(mesh, "gas", "lambda", dimLength, lambda);
     writeCellField(mesh, this->owner().name(), "Knp", dimless, Knp);
-
-    sinceWrite_->reset();
 }
 
 
@@ -133,16 +134,7 @@ void Foam::InterphaseCouplingModel<CloudType>::coupleParcels(gasCloud* gas)
 {
     const bool writing = this->owner().db().time().writeTime();
 
-    if (gas)
-    {
-        if (!now_.valid())
-        {
-            now_.reset(new gasCellAverage(*gas, 1));
-            sinceWrite_.reset(new gasCellAverage(*gas, 0));
-        }
-        now_->sample(*gas);
-        sinceWrite_->add(*now_);
-    }
+    gas_ = gas;
 
     if (active())
     {
@@ -154,9 +146,9 @@ void Foam::InterphaseCouplingModel<CloudType>::coupleParcels(gasCloud* gas)
         }
     }
 
-    if (writing && sinceWrite_.valid())
+    if (writing && gas)
     {
-        writeKnudsen();
+        writeKnudsen(gas->meanFreePath());
     }
 }
 
