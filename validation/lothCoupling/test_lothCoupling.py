@@ -44,7 +44,6 @@ doc/physics.md 4.5, 4.6), end to end on the solver.
 
 import math
 import os
-import re
 import shutil
 import subprocess
 
@@ -106,11 +105,9 @@ def make_case(name, rho_g, U, d, dt, steps, write_every, coupling="Loth", edit=N
 def single(path):
     """The value of a one-parcel field file, which OpenFOAM writes inline:
     1(value) or 1((x y z))."""
-    with open(path) as f:
-        text = f.read()
-    m = re.search(r"\n1\s*\((.*)\)\s*\n", text)
-    assert m, path
-    return [float(x) for x in m.group(1).strip("()").split()]
+    values = foam.read_list(path)
+    assert len(values) == 1, path
+    return [float(x) for x in values.ravel()]
 
 
 def trajectory(case):
@@ -315,8 +312,8 @@ def test_lift(shear):
     v = single(os.path.join(case, foam.latest_time(case), "lagrangian", "grains", "U"))
 
     # The grain's y (placed within 1e-5 of Y_GRAIN) sets the gas it sees
-    with open(os.path.join(case, "0", "lagrangian", "grains", "positions")) as f:
-        y = float(re.search(r"(?m)^\((\S+) (\S+) (\S+)\) \d+", f.read()).group(2))
+    y = float(foam.read_positions(os.path.join(case, "0", "lagrangian", "grains",
+                                               "positions"))[0, 1])
     U = U + shear*(y - Y_GRAIN)
     mp = RHO_P*math.pi*d**3/6
     reynolds = rho*U*d/mu

@@ -163,12 +163,7 @@ def read_settings(case):
     path = os.path.join(case, "system", "observablesDict")
     if not os.path.exists(path):
         raise FileNotFoundError(f"{path}: missing (needs {', '.join(SETTINGS)})")
-    with open(path) as f:
-        text = f.read()
-    text = re.sub(r"/\*.*?\*/", " ", text, flags=re.S)
-    text = re.sub(r"//[^\n]*", " ", text)
-    text = re.sub(r"FoamFile\s*\{[^}]*\}", " ", text)
-    entries = dict(re.findall(r"(\w+)\s+([^;{}\s]+)\s*;", text))
+    entries = foam.read_dict(path)
     missing = [k for k in SETTINGS if k not in entries]
     if missing:
         raise KeyError(f"{path}: missing {', '.join(missing)}")
@@ -235,39 +230,23 @@ def mesh(case):
     return dict(C=C, x=C[:, 0], r=radius(C), n=len(C))
 
 
-def _list_body(path):
-    """Text between the brackets of an ASCII list file (faces, owner)."""
-    with open(path, "rb") as f:
-        text = f.read()
-    m = re.search(rb"\n(\d+)\s*\n\(", text)
-    if not m:
-        raise ValueError(f"{path}: no ASCII list")
-    return int(m.group(1)), text[m.end():text.rindex(b")")]
-
-
 def meridian_cells(case):
     """Outline of every cell on the meridian plane, (x, r) polygons, from
     the faces of the mesh's first wedge patch (one per cell), or None when
     the mesh has no wedge patch or is not written in ASCII."""
-    mesh_dir = os.path.join(case, "constant", "polyMesh")
     try:
-        with open(os.path.join(mesh_dir, "boundary")) as f:
-            boundary = f.read()
-        m = re.search(r"\{[^{}]*type\s+wedge;[^{}]*\}", boundary)
-        if not m:
+        wedges = [p for p in foam.read_boundary(case).values() if p.get("type") == "wedge"]
+        if not wedges:
             return None
-        n_faces = int(re.search(r"nFaces\s+(\d+);", m.group(0)).group(1))
-        start = int(re.search(r"startFace\s+(\d+);", m.group(0)).group(1))
-        points = foam.read_list(os.path.join(mesh_dir, "points")).reshape(-1, 3)
-        _, body = _list_body(os.path.join(mesh_dir, "faces"))
-        faces = re.findall(rb"\d+\(([^)]*)\)", body)[start:start + n_faces]
-        _, body = _list_body(os.path.join(mesh_dir, "owner"))
-        owner = np.array(body.split(), int)[start:start + n_faces]
-    except (OSError, ValueError, AttributeError, IndexError):
+        n_faces, start = int(wedges[0]["nFaces"]), int(wedges[0]["startFace"])
+        points = foam.read_points(case)
+        faces = foam.read_faces(case, start, n_faces)
+        owner = foam.read_labels(case, "owner")[start:start + n_faces]
+    except (OSError, ValueError, KeyError, IndexError):
         return None
     polygons = [None]*(owner.max() + 1 if len(owner) else 0)
     for cell, face in zip(owner, faces):
-        pts = points[np.array(face.split(), int)]
+        pts = points[face]
         polygons[cell] = np.stack([pts[:, 0], np.hypot(pts[:, 1], pts[:, 2])], -1)
     return polygons
 
@@ -696,8 +675,7 @@ def density_note(case, name):
         return (f"shock from {name}: one step's simulators (no time average "
                 "written: noisy)")
     try:
-        with open(os.path.join(case, "system", "controlDict")) as f:
-            text = re.sub(r"//[^\n]*", " ", f.read())
+        text = foam.dict_text(os.path.join(case, "system", "controlDict"))
     except OSError:
         text = ""
     if re.search(r"restartOnOutput\s+(true|on|yes)\s*;", text):
