@@ -83,6 +83,7 @@ import numpy as np
 import pytest
 
 from rmf import foam
+from rmf_testing import run_failing
 from rmf.box import FILL, GAS, K, MASS, PROPS, V_CELL, ZETA, copy_box, remove
 
 sys.path.insert(0, os.path.join(foam.PROJECT_DIR, "validation", "dragLaws"))
@@ -222,7 +223,7 @@ def filled():
 def test_unknown_coupling_name(filled):
     case = foam.copy_case(filled, os.path.join(BUILD, "badName"))
     foam.set_entry(case, PROPS, "subModels/interphaseCoupling", "oneway")
-    out = foam.run_failing(case, "rarefiedMultiphaseFoam")
+    out = run_failing(case, "rarefiedMultiphaseFoam")
     for text in ("FOAM FATAL IO ERROR", "grainsProperties", "interphaseCoupling",
                  "oneway", "oneWay", "none"):
         assert text in out, text
@@ -231,7 +232,7 @@ def test_unknown_coupling_name(filled):
 def test_missing_coupling_keyword(filled):
     case = foam.copy_case(filled, os.path.join(BUILD, "noKeyword"))
     remove(case, PROPS, "subModels/interphaseCoupling")
-    out = foam.run_failing(case, "rarefiedMultiphaseFoam")
+    out = run_failing(case, "rarefiedMultiphaseFoam")
     for text in ("FOAM FATAL IO ERROR", "grainsProperties", "interphaseCoupling"):
         assert text in out, text
 

@@ -51,6 +51,7 @@ import numpy as np
 import pytest
 
 from rmf import foam
+from rmf_testing import run_failing
 
 import sys
 sys.path.insert(0, os.path.join(foam.PROJECT_DIR, "validation", "dragLaws"))
@@ -332,7 +333,7 @@ def test_prescribed_table_outside():
     with a FatalError naming the table's dictionary, the parcel's
     coordinate and the table's range."""
     case = table_case("table_outside", TABLE[:2])
-    out = foam.run_failing(case, "rarefiedMultiphaseFoam")
+    out = run_failing(case, "rarefiedMultiphaseFoam")
     for text in ("FOAM FATAL ERROR", "outside the prescribed gas table",
                  "grainsProperties", "coordinate: 0.1999", "table range: [-0.4, 0]"):
         assert text in out, (text, out[-2000:])
@@ -363,7 +364,7 @@ def test_prescribed_table_bad_input(vacuum, name):
     rows, extra, texts = BAD_TABLES[name]
     case = foam.copy_case(vacuum, os.path.join(BUILD, "badTable_" + name))
     use_table(case, rows, extra=extra)
-    out = foam.run_failing(case, "rarefiedMultiphaseFoam")
+    out = run_failing(case, "rarefiedMultiphaseFoam")
     for text in ("FOAM FATAL IO ERROR", "grainsProperties") + texts:
         assert text in out, (text, out[-2000:])
 
@@ -374,7 +375,7 @@ def test_prescribed_table_bad_file(vacuum):
     case = foam.copy_case(vacuum, os.path.join(BUILD, "badTable_file"))
     use_table(case, TABLE, inline=False)
     os.remove(os.path.join(case, "constant", "gasTable"))
-    out = foam.run_failing(case, "rarefiedMultiphaseFoam")
+    out = run_failing(case, "rarefiedMultiphaseFoam")
     for text in ("FOAM FATAL IO ERROR", "grainsProperties", "'file'",
                  "constant/gasTable", "a readable file"):
         assert text in out, (text, out[-2000:])
@@ -397,7 +398,7 @@ def vacuum():
 def test_bad_input(vacuum, entry, value, texts):
     case = foam.copy_case(vacuum, os.path.join(BUILD, "bad_" + entry.split("/")[-1]))
     foam.set_entry(case, PROPS, entry, value)
-    out = foam.run_failing(case, "rarefiedMultiphaseFoam")
+    out = run_failing(case, "rarefiedMultiphaseFoam")
     for text in ("FOAM FATAL IO ERROR", "grainsProperties") + texts:
         assert text in out, (text, out[-2000:])
 
@@ -478,7 +479,7 @@ def test_loth_bad_averaging_steps():
     foam.set_entry(case, PROPS, "subModels/LothCoeffs/gas", "dsmc")
     foam.set_entry(case, PROPS, "subModels/LothCoeffs/averagingSteps", 0)
     prepare(case)
-    out = foam.run_failing(case, "rarefiedMultiphaseFoam")
+    out = run_failing(case, "rarefiedMultiphaseFoam")
     for text in ("FOAM FATAL IO ERROR", "grainsProperties", "averagingSteps", "[1, "):
         assert text in out, (text, out[-2000:])
 
@@ -530,7 +531,7 @@ def test_adaptive_bad_input(entry, value, texts):
     foam.set_entry(case, PROPS, "subModels/adaptiveCoeffs", "{}")
     foam.set_entry(case, PROPS, entry, value)
     prepare(case)
-    out = foam.run_failing(case, "rarefiedMultiphaseFoam")
+    out = run_failing(case, "rarefiedMultiphaseFoam")
     for text in ("FOAM FATAL IO ERROR", "grainsProperties") + texts:
         assert text in out, (text, out[-2000:])
 

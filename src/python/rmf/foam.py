@@ -121,13 +121,6 @@ def run(case, *args, log=None, np_=1):
     return os.path.join(case, log)
 
 
-def run_failing(case, app):
-    """Run an application that must fail (bad input); returns its output."""
-    proc = subprocess.run([app], cwd=case, capture_output=True, text=True)
-    assert proc.returncode != 0, f"{app} accepted bad input"
-    return proc.stdout + proc.stderr
-
-
 def set_entry(case, dict_path, entry, value):
     """Set one entry of a case dictionary with foamDictionary."""
     subprocess.run(["foamDictionary", "-entry", entry, "-set", str(value),
