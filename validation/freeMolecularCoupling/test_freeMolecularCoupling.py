@@ -83,8 +83,8 @@ import numpy as np
 import pytest
 
 from rmf import foam
+from rmf_box import FILL, GAS, K, MASS, PROPS, V_CELL, ZETA, copy_box
 from rmf_testing import run_failing
-from rmf.box import FILL, GAS, K, MASS, PROPS, V_CELL, ZETA, copy_box, remove
 
 sys.path.insert(0, os.path.join(foam.PROJECT_DIR, "validation", "dragLaws"))
 from reference import cd_fm_closed  # noqa: E402
@@ -231,7 +231,7 @@ def test_unknown_coupling_name(filled):
 
 def test_missing_coupling_keyword(filled):
     case = foam.copy_case(filled, os.path.join(BUILD, "noKeyword"))
-    remove(case, PROPS, "subModels/interphaseCoupling")
+    foam.remove_entry(case, PROPS, "subModels/interphaseCoupling")
     out = run_failing(case, "rarefiedMultiphaseFoam")
     for text in ("FOAM FATAL IO ERROR", "grainsProperties", "interphaseCoupling"):
         assert text in out, text

@@ -93,8 +93,8 @@ import numpy as np
 import pytest
 
 from rmf import foam
+from rmf_box import CONTROL, FILL, GAS, GRAINS, K, MASS, PROPS, V_CELL, ZETA, copy_box
 from rmf_testing import run_failing
-from rmf.box import CONTROL, FILL, GAS, GRAINS, K, MASS, PROPS, V_CELL, ZETA, copy_box
 
 BUILD = os.path.join(foam.PROJECT_DIR, "build", "validation", "twoWayCoupling")
 
