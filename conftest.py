@@ -1,11 +1,14 @@
 # rarefiedMultiphaseFoam. Copyright (C) 2026 The rarefiedMultiphaseFoam authors
 # SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
-"""pytest configuration for ./Alltest: project helpers on sys.path, --long."""
+"""pytest configuration for ./Alltest: project helpers and test support on
+sys.path, --long."""
 
 import os
 import sys
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "src", "python"))
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(HERE, "src", "python"))     # the rmf package
+sys.path.insert(0, os.path.join(HERE, "testing"))           # test support (testing/)
 
 
 def pytest_addoption(parser):

@@ -25,6 +25,7 @@ import numpy as np
 import pytest
 
 from rmf import foam
+from rmf_testing import run_failing
 
 import uniformity as uf
 
@@ -199,7 +200,7 @@ def meshed():
 def test_bad_keyword(meshed, entry, value, valid):
     case = foam.copy_case(meshed, os.path.join(BUILD, "bad" + entry))
     foam.set_entry(case, "constant/dsmcProperties", entry, value)
-    out = foam.run_failing(case, "rarefiedMultiphaseInitialise")
+    out = run_failing(case, "rarefiedMultiphaseInitialise")
     for text in ("FOAM FATAL IO ERROR", "constant/dsmcProperties", entry,
                  str(float(value)).rstrip("0").rstrip("."), valid):
         assert text in out, text
@@ -208,7 +209,7 @@ def test_bad_keyword(meshed, entry, value, valid):
 def test_keyword_without_axisymmetric(meshed):
     case = foam.copy_case(meshed, os.path.join(BUILD, "notAxisymmetric"))
     foam.set_entry(case, "constant/dsmcProperties", "axisymmetric", "false")
-    out = foam.run_failing(case, "rarefiedMultiphaseFoam")
+    out = run_failing(case, "rarefiedMultiphaseFoam")
     for text in ("FOAM FATAL IO ERROR", "constant/dsmcProperties", "radialExtent",
                  "only with 'axisymmetric true;'"):
         assert text in out, text
@@ -222,7 +223,7 @@ def test_not_a_wedge():
     props = os.path.join(case, "constant", "dsmcProperties")
     with open(props, "a") as f:
         f.write("\naxisymmetric true;\nradialExtent 0.2;\nmaxRadialWeight 10;\n")
-    out = foam.run_failing(case, "rarefiedMultiphaseInitialise")
+    out = run_failing(case, "rarefiedMultiphaseInitialise")
     for text in ("FOAM FATAL IO ERROR", "constant/dsmcProperties", "axisymmetric",
                  "only on a wedge mesh about the x axis", "no wedge patch"):
         assert text in out, text
@@ -239,7 +240,7 @@ def test_grains_need_axisymmetric(meshed):
         shutil.copy(os.path.join(snider, "constant", name), os.path.join(case, "constant"))
     foam.set_entry(case, "constant/grainsProperties", "subModels/interphaseCoupling", "none")
     foam.set_entry(case, "constant/grainsProperties", "subModels/patchInteractionModel", "none")
-    out = foam.run_failing(case, "rarefiedMultiphaseFoam")
+    out = run_failing(case, "rarefiedMultiphaseFoam")
     for text in ("FOAM FATAL IO ERROR", "'axisymmetric'", "constant/grainsProperties",
                  "true on a wedge mesh"):
         assert text in out, (text, out[-1500:])
@@ -249,7 +250,7 @@ def test_grains_need_axisymmetric(meshed):
     foam.set_entry(case, "constant/grainsProperties", "radialExtent", EXTENT)
     for key in ("axisymmetric", "radialExtent", "maxRadialWeight"):
         foam.remove_entry(case, "constant/dsmcProperties", key)
-    out = foam.run_failing(case, "rarefiedMultiphaseFoam")
+    out = run_failing(case, "rarefiedMultiphaseFoam")
     for text in ("FOAM FATAL IO ERROR", "'axisymmetric'", "constant/grainsProperties",
                  "constant/dsmcProperties"):
         assert text in out, (text, out[-1500:])

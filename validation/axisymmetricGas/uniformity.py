@@ -74,7 +74,7 @@ def expected_simulators(case, density, weight, max_weight, extent):
     n/F_N times the integral of 1/RWF over the volume, the rows of cells
     being slabs a <= y <= b whose volume grows as y dy."""
     radii, row_vol, _, _ = radial_batches(case, skip=0)
-    points = foam.read_list(os.path.join(case, "constant", "polyMesh", "points"))
+    points = foam.read_points(case)
     edges = np.linspace(0, points[:, 1].max(), len(radii) + 1)
     total = 0.0
     for (a, b), v in zip(zip(edges[:-1], edges[1:]), row_vol):

@@ -68,7 +68,6 @@ turned back into the meridional plane, and are weighted radially.
 
 import math
 import os
-import re
 
 import numpy as np
 import pytest
@@ -89,14 +88,6 @@ MAX_SE = 0.04       # relative standard error a row may have
 def _report(ok, what, figures):
     print(f"{'PASS' if ok else 'FAIL'} axisymmetricGrains {what}: {figures}")
     return ok
-
-
-def positions(path):
-    """Points of a lagrangian positions file (lines "(x y z) celli")."""
-    with open(path) as f:
-        text = f.read()
-    return np.array([[float(v) for v in m.group(1).split()]
-                     for m in re.finditer(r"\(([^()]*)\)\s+-?\d+", text)])
 
 
 def parcels(case, time, name):
@@ -136,8 +127,8 @@ def test_azimuthal_drift():
         ("system/controlDict", "writeInterval", steps),
     ])
     end = foam.latest_time(case)
-    (x0, r0, _), = positions(os.path.join(case, "0", "lagrangian", "grains", "positions"))
-    (x1, y1, z1), = positions(os.path.join(case, end, "lagrangian", "grains", "positions"))
+    (x0, r0, _), = foam.read_positions(os.path.join(case, "0", "lagrangian", "grains", "positions"))
+    (x1, y1, z1), = foam.read_positions(os.path.join(case, end, "lagrangian", "grains", "positions"))
     U = parcels(case, end, "U").reshape(3)
     t = float(end)
     r = math.hypot(r0, w * t)
@@ -253,7 +244,7 @@ def test_weighted_coupling_heat():
 
     end = foam.latest_time(case)
     t = float(end)
-    r = positions(os.path.join(case, end, "lagrangian", "grains", "positions"))[:, 1]
+    r = foam.read_positions(os.path.join(case, end, "lagrangian", "grains", "positions"))[:, 1]
     dT = parcels(case, end, "T") - Tp0
     n = float(foam.get_entry(case, "system/dsmcInitialiseDict", "numberDensities/Ar"))
     Tg = float(foam.get_entry(case, "system/dsmcInitialiseDict", "temperature"))
@@ -286,24 +277,11 @@ PLACED_BEFORE = {
 }
 
 
-def _polymesh(case):
-    """Points, faces (list of index arrays), owner, neighbour of an ASCII
-    constant/polyMesh."""
-    poly = os.path.join(case, "constant", "polyMesh")
-    points = foam.read_list(os.path.join(poly, "points"))
-    owner = foam.read_list(os.path.join(poly, "owner")).astype(int)
-    neighbour = foam.read_list(os.path.join(poly, "neighbour")).astype(int)
-    with open(os.path.join(poly, "faces")) as f:
-        text = f.read()
-    body = text[re.search(r"\n\d+\s*\n\(", text).end():]
-    faces = [np.array(m.split(), int) for m in re.findall(r"\d+\(([^()]*)\)", body)]
-    return points, faces, owner, neighbour
-
-
 def _outside(case, x, cells):
     """Largest distance of each point x[i] outside the face planes of its
     cell cells[i] (<= 0: inside), from the face centres and Newell normals."""
-    points, faces, owner, neighbour = _polymesh(case)
+    points, faces = foam.read_points(case), foam.read_faces(case)
+    owner, neighbour = foam.read_labels(case, "owner"), foam.read_labels(case, "neighbour")
     centre = np.array([points[f].mean(axis=0) for f in faces])
     normal = np.array([np.cross(points[f], points[np.roll(f, -1)]).sum(axis=0)
                        for f in faces])

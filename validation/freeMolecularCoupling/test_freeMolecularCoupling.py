@@ -83,7 +83,8 @@ import numpy as np
 import pytest
 
 from rmf import foam
-from rmf.box import FILL, GAS, K, MASS, PROPS, V_CELL, ZETA, copy_box, remove
+from rmf_box import FILL, GAS, K, MASS, PROPS, V_CELL, ZETA, copy_box
+from rmf_testing import run_failing
 
 sys.path.insert(0, os.path.join(foam.PROJECT_DIR, "validation", "dragLaws"))
 from reference import cd_fm_closed  # noqa: E402
@@ -222,7 +223,7 @@ def filled():
 def test_unknown_coupling_name(filled):
     case = foam.copy_case(filled, os.path.join(BUILD, "badName"))
     foam.set_entry(case, PROPS, "subModels/interphaseCoupling", "oneway")
-    out = foam.run_failing(case, "rarefiedMultiphaseFoam")
+    out = run_failing(case, "rarefiedMultiphaseFoam")
     for text in ("FOAM FATAL IO ERROR", "grainsProperties", "interphaseCoupling",
                  "oneway", "oneWay", "none"):
         assert text in out, text
@@ -230,8 +231,8 @@ def test_unknown_coupling_name(filled):
 
 def test_missing_coupling_keyword(filled):
     case = foam.copy_case(filled, os.path.join(BUILD, "noKeyword"))
-    remove(case, PROPS, "subModels/interphaseCoupling")
-    out = foam.run_failing(case, "rarefiedMultiphaseFoam")
+    foam.remove_entry(case, PROPS, "subModels/interphaseCoupling")
+    out = run_failing(case, "rarefiedMultiphaseFoam")
     for text in ("FOAM FATAL IO ERROR", "grainsProperties", "interphaseCoupling"):
         assert text in out, text
 

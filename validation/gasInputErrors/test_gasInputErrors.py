@@ -9,6 +9,7 @@ import os
 import pytest
 
 from rmf import foam
+from rmf_testing import run_failing
 
 TUTORIAL = os.path.join(foam.PROJECT_DIR, "tutorials", "gas", "impingingStream")
 BUILD = os.path.join(foam.PROJECT_DIR, "build", "validation", "gasInputErrors")
@@ -32,7 +33,7 @@ def with_entry(meshed, name, dict_path, entry, value):
 def test_unknown_collision_model(meshed, app):
     case = with_entry(meshed, "unknownModel", "constant/dsmcProperties",
                       "BinaryCollisionModel", "HardSphereX")
-    out = foam.run_failing(case, app)
+    out = run_failing(case, app)
     for text in ("FOAM FATAL IO ERROR", "constant/dsmcProperties", "BinaryCollisionModel",
                  "HardSphereX", "VariableHardSphere", "LarsenBorgnakkeVariableHardSphere"):
         assert text in out, text
@@ -41,7 +42,7 @@ def test_unknown_collision_model(meshed, app):
 def test_negative_initial_density(meshed):
     case = with_entry(meshed, "negativeDensity", "system/dsmcInitialiseDict",
                       "numberDensities/N2", "-5e19")
-    out = foam.run_failing(case, "rarefiedMultiphaseInitialise")
+    out = run_failing(case, "rarefiedMultiphaseInitialise")
     for text in ("FOAM FATAL IO ERROR", "system/dsmcInitialiseDict", "'N2'",
                  "-5e+19", "[0, inf)"):
         assert text in out, text
@@ -50,7 +51,7 @@ def test_negative_initial_density(meshed):
 def test_negative_free_stream_density(meshed):
     case = with_entry(meshed, "negativeFreeStream", "constant/dsmcProperties",
                       "FreeStreamCoeffs/numberDensities/N2", "-5e19")
-    out = foam.run_failing(case, "rarefiedMultiphaseFoam")
+    out = run_failing(case, "rarefiedMultiphaseFoam")
     for text in ("FOAM FATAL IO ERROR", "constant/dsmcProperties", "'N2'", "-5e+19",
                  "[0, inf)"):
         assert text in out, text
@@ -59,7 +60,7 @@ def test_negative_free_stream_density(meshed):
 def test_negative_weight(meshed):
     case = with_entry(meshed, "negativeWeight", "constant/dsmcProperties",
                       "nEquivalentParticles", "-6e11")
-    out = foam.run_failing(case, "rarefiedMultiphaseFoam")
+    out = run_failing(case, "rarefiedMultiphaseFoam")
     for text in ("FOAM FATAL IO ERROR", "constant/dsmcProperties",
                  "nEquivalentParticles", "-6e+11", "(0, inf)"):
         assert text in out, text
@@ -68,5 +69,5 @@ def test_negative_weight(meshed):
 def test_no_phase(meshed):
     case = foam.copy_case(meshed, os.path.join(BUILD, "noPhase"))
     os.remove(os.path.join(case, "constant", "dsmcProperties"))
-    out = foam.run_failing(case, "rarefiedMultiphaseFoam")
+    out = run_failing(case, "rarefiedMultiphaseFoam")
     assert "Nothing to solve" in out and "dsmcProperties" in out

@@ -44,7 +44,6 @@ doc/physics.md 4.5, 4.6), end to end on the solver.
 
 import math
 import os
-import re
 import shutil
 import subprocess
 
@@ -52,6 +51,7 @@ import numpy as np
 import pytest
 
 from rmf import foam
+from rmf_testing import run_failing
 
 import sys
 sys.path.insert(0, os.path.join(foam.PROJECT_DIR, "validation", "dragLaws"))
@@ -106,11 +106,9 @@ def make_case(name, rho_g, U, d, dt, steps, write_every, coupling="Loth", edit=N
 def single(path):
     """The value of a one-parcel field file, which OpenFOAM writes inline:
     1(value) or 1((x y z))."""
-    with open(path) as f:
-        text = f.read()
-    m = re.search(r"\n1\s*\((.*)\)\s*\n", text)
-    assert m, path
-    return [float(x) for x in m.group(1).strip("()").split()]
+    values = foam.read_list(path)
+    assert len(values) == 1, path
+    return [float(x) for x in values.ravel()]
 
 
 def trajectory(case):
@@ -315,8 +313,8 @@ def test_lift(shear):
     v = single(os.path.join(case, foam.latest_time(case), "lagrangian", "grains", "U"))
 
     # The grain's y (placed within 1e-5 of Y_GRAIN) sets the gas it sees
-    with open(os.path.join(case, "0", "lagrangian", "grains", "positions")) as f:
-        y = float(re.search(r"(?m)^\((\S+) (\S+) (\S+)\) \d+", f.read()).group(2))
+    y = float(foam.read_positions(os.path.join(case, "0", "lagrangian", "grains",
+                                               "positions"))[0, 1])
     U = U + shear*(y - Y_GRAIN)
     mp = RHO_P*math.pi*d**3/6
     reynolds = rho*U*d/mu
@@ -335,7 +333,7 @@ def test_prescribed_table_outside():
     with a FatalError naming the table's dictionary, the parcel's
     coordinate and the table's range."""
     case = table_case("table_outside", TABLE[:2])
-    out = foam.run_failing(case, "rarefiedMultiphaseFoam")
+    out = run_failing(case, "rarefiedMultiphaseFoam")
     for text in ("FOAM FATAL ERROR", "outside the prescribed gas table",
                  "grainsProperties", "coordinate: 0.1999", "table range: [-0.4, 0]"):
         assert text in out, (text, out[-2000:])
@@ -366,7 +364,7 @@ def test_prescribed_table_bad_input(vacuum, name):
     rows, extra, texts = BAD_TABLES[name]
     case = foam.copy_case(vacuum, os.path.join(BUILD, "badTable_" + name))
     use_table(case, rows, extra=extra)
-    out = foam.run_failing(case, "rarefiedMultiphaseFoam")
+    out = run_failing(case, "rarefiedMultiphaseFoam")
     for text in ("FOAM FATAL IO ERROR", "grainsProperties") + texts:
         assert text in out, (text, out[-2000:])
 
@@ -377,7 +375,7 @@ def test_prescribed_table_bad_file(vacuum):
     case = foam.copy_case(vacuum, os.path.join(BUILD, "badTable_file"))
     use_table(case, TABLE, inline=False)
     os.remove(os.path.join(case, "constant", "gasTable"))
-    out = foam.run_failing(case, "rarefiedMultiphaseFoam")
+    out = run_failing(case, "rarefiedMultiphaseFoam")
     for text in ("FOAM FATAL IO ERROR", "grainsProperties", "'file'",
                  "constant/gasTable", "a readable file"):
         assert text in out, (text, out[-2000:])
@@ -400,7 +398,7 @@ def vacuum():
 def test_bad_input(vacuum, entry, value, texts):
     case = foam.copy_case(vacuum, os.path.join(BUILD, "bad_" + entry.split("/")[-1]))
     foam.set_entry(case, PROPS, entry, value)
-    out = foam.run_failing(case, "rarefiedMultiphaseFoam")
+    out = run_failing(case, "rarefiedMultiphaseFoam")
     for text in ("FOAM FATAL IO ERROR", "grainsProperties") + texts:
         assert text in out, (text, out[-2000:])
 
@@ -481,7 +479,7 @@ def test_loth_bad_averaging_steps():
     foam.set_entry(case, PROPS, "subModels/LothCoeffs/gas", "dsmc")
     foam.set_entry(case, PROPS, "subModels/LothCoeffs/averagingSteps", 0)
     prepare(case)
-    out = foam.run_failing(case, "rarefiedMultiphaseFoam")
+    out = run_failing(case, "rarefiedMultiphaseFoam")
     for text in ("FOAM FATAL IO ERROR", "grainsProperties", "averagingSteps", "[1, "):
         assert text in out, (text, out[-2000:])
 
@@ -533,7 +531,7 @@ def test_adaptive_bad_input(entry, value, texts):
     foam.set_entry(case, PROPS, "subModels/adaptiveCoeffs", "{}")
     foam.set_entry(case, PROPS, entry, value)
     prepare(case)
-    out = foam.run_failing(case, "rarefiedMultiphaseFoam")
+    out = run_failing(case, "rarefiedMultiphaseFoam")
     for text in ("FOAM FATAL IO ERROR", "grainsProperties") + texts:
         assert text in out, (text, out[-2000:])
 

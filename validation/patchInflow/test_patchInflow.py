@@ -43,6 +43,7 @@ import pytest
 from scipy import integrate, special
 
 from rmf import foam
+from rmf_testing import run_failing
 
 TUTORIAL = os.path.join(foam.PROJECT_DIR, "tutorials", "gas", "impingingStream")
 BUILD = os.path.join(foam.PROJECT_DIR, "build", "validation", "patchInflow")
@@ -229,7 +230,7 @@ def bad_case(meshed, name, rows=None, edit=None):
     write_properties(case, rows or profile_rows())
     if edit:
         foam.set_entry(case, PROPS, *edit)
-    return foam.run_failing(case, "rarefiedMultiphaseFoam")
+    return run_failing(case, "rarefiedMultiphaseFoam")
 
 
 @pytest.mark.parametrize("name, rows, edit, texts", [

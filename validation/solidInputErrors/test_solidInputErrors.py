@@ -11,6 +11,7 @@ import subprocess
 import pytest
 
 from rmf import foam
+from rmf_testing import run_failing
 
 TUTORIAL = os.path.join(foam.PROJECT_DIR, "tutorials", "solids", "sniderSedimentation")
 BUILD = os.path.join(foam.PROJECT_DIR, "build", "validation", "solidInputErrors")
@@ -87,7 +88,7 @@ CLOUD_CASES = [
 def test_bad_cloud_entry(meshed, app, name, entry, value, valid):
     case = with_entry(meshed, name, PROPS, entry, value)
     keyword = entry.split("/")[-1]
-    out = foam.run_failing(case, app)
+    out = run_failing(case, app)
     expect(out, PROPS, keyword, value.lstrip("-") if keyword == "type" else value, valid)
 
 
@@ -110,14 +111,14 @@ def test_bad_collision_entry(meshed, app, name, keyword, value, valid):
                       + keyword, value)
     foam.set_entry(case, PROPS, "subModels/stochasticCollisionModel",
                    "NTCHardSphere")
-    out = foam.run_failing(case, app)
+    out = run_failing(case, app)
     expect(out, PROPS, "NTCHardSphereCoeffs", keyword, value, valid)
 
 
 def test_collision_model_name(meshed):
     case = with_entry(meshed, "ntcName", PROPS,
                       "subModels/stochasticCollisionModel", "NTCHardSpheres")
-    out = foam.run_failing(case, "rarefiedMultiphaseFoam")
+    out = run_failing(case, "rarefiedMultiphaseFoam")
     expect(out, PROPS, "stochasticCollisionModel", "NTCHardSpheres",
            "NTCHardSphere")
 
@@ -137,11 +138,11 @@ INIT_CASES = [
 def test_bad_initialisation(meshed, name, entry, value, valid, remove):
     case = with_entry(meshed, name, INIT, REGION + entry, value,
                       remove=REGION + remove if remove else None)
-    out = foam.run_failing(case, "rarefiedMultiphaseInitialise")
+    out = run_failing(case, "rarefiedMultiphaseInitialise")
     expect(out, INIT, entry, value, valid)
 
 
 def test_region_outside_mesh(meshed):
     case = with_entry(meshed, "outside", INIT, REGION + "max", "(0.2 0.138 0.3)")
-    out = foam.run_failing(case, "rarefiedMultiphaseInitialise")
+    out = run_failing(case, "rarefiedMultiphaseInitialise")
     expect(out, INIT, "positions outside the mesh")

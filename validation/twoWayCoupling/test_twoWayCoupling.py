@@ -93,7 +93,8 @@ import numpy as np
 import pytest
 
 from rmf import foam
-from rmf.box import CONTROL, FILL, GAS, GRAINS, K, MASS, PROPS, V_CELL, ZETA, copy_box
+from rmf_box import CONTROL, FILL, GAS, GRAINS, K, MASS, PROPS, V_CELL, ZETA, copy_box
+from rmf_testing import run_failing
 
 BUILD = os.path.join(foam.PROJECT_DIR, "build", "validation", "twoWayCoupling")
 
@@ -343,7 +344,7 @@ def test_bad_input(small, model, key, value, texts):
     foam.set_entry(case, PROPS, "subModels/interphaseCoupling", model)
     foam.set_entry(case, PROPS, f"subModels/{model}Coeffs", "{}")
     foam.set_entry(case, PROPS, f"subModels/{model}Coeffs/{key}", value)
-    out = foam.run_failing(case, "rarefiedMultiphaseFoam")
+    out = run_failing(case, "rarefiedMultiphaseFoam")
     for text in ("FOAM FATAL IO ERROR", "grainsProperties", model + "Coeffs", key) + texts:
         assert text in out, (text, out[-2000:])
     print(f"\nPASS bad {model}Coeffs/{key} {value} stops with a FatalIOError")

@@ -1,11 +1,13 @@
 # rarefiedMultiphaseFoam. Copyright (C) 2026 The rarefiedMultiphaseFoam authors
 # SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
-"""Reading OpenFOAM ASCII fields and running OpenFOAM applications on a case.
+"""Reading OpenFOAM ASCII files and running OpenFOAM applications on a case.
 
 Only what the project's tests, benchmarks and plots need: internal fields
-of volScalarField / volVectorField files written in ASCII, cell centres
-(from `postProcess -func writeCellCentres`), and running an application
-with its output in log.<application> (as RunFunctions does).
+of volScalarField / volVectorField files written in ASCII, lists and
+parcel positions, flat dictionary entries, the ASCII polyMesh (points,
+faces, owner, neighbour, boundary), cell centres (from `postProcess -func
+writeCellCentres`), and running an application with its output in
+log.<application> (as RunFunctions does).
 """
 
 import filecmp
@@ -37,9 +39,14 @@ def _uniform(value, n):
     return np.full(n, float(value))
 
 
+def mesh_file(case, name):
+    """Path of one file of the case's constant/polyMesh."""
+    return os.path.join(case, "constant", "polyMesh", name)
+
+
 def n_cells(case):
     """Number of cells of the case's mesh (from the owner file's note)."""
-    with open(os.path.join(case, "constant", "polyMesh", "owner"), "rb") as f:
+    with open(mesh_file(case, "owner"), "rb") as f:
         head = f.read(4096)
     m = re.search(rb"nCells:\s*(\d+)", head)
     if not m:
@@ -112,13 +119,6 @@ def run(case, *args, log=None, np_=1):
             tail = "".join(f.readlines()[-30:])
         raise subprocess.CalledProcessError(proc.returncode, cmd, output=tail)
     return os.path.join(case, log)
-
-
-def run_failing(case, app):
-    """Run an application that must fail (bad input); returns its output."""
-    proc = subprocess.run([app], cwd=case, capture_output=True, text=True)
-    assert proc.returncode != 0, f"{app} accepted bad input"
-    return proc.stdout + proc.stderr
 
 
 def set_entry(case, dict_path, entry, value):
@@ -215,6 +215,55 @@ def read_list(path):
     if len(values) != n:
         raise ValueError(f"{path}: expected {n} values, read {len(values)}")
     return values
+
+
+def dict_text(path):
+    """Text of an OpenFOAM dictionary file without its comments and its
+    FoamFile header."""
+    with open(path) as f:
+        text = f.read()
+    text = re.sub(r"/\*.*?\*/", " ", text, flags=re.S)
+    text = re.sub(r"//[^\n]*", " ", text)
+    return re.sub(r"FoamFile\s*\{[^}]*\}", " ", text)
+
+
+def read_dict(path):
+    """The 'keyword value;' entries of a dictionary file, values as
+    strings: a flat reading (entries of sub-dictionaries included, the last
+    of a repeated keyword kept; no #include or $macro expansion)."""
+    return dict(re.findall(r"(\w+)\s+([^;{}\s]+)\s*;", dict_text(path)))
+
+
+def read_boundary(case):
+    """Patches of constant/polyMesh/boundary in file order: {name: {keyword:
+    value as a string}} (type, nFaces, startFace, ...)."""
+    text = dict_text(mesh_file(case, "boundary"))
+    return {name: dict(re.findall(r"(\w+)\s+([^;]+?)\s*;", body))
+            for name, body in re.findall(r"([^\s{}()]+)\s*\{([^{}]*)\}", text)}
+
+
+def read_points(case):
+    """Points (n, 3) of an ASCII constant/polyMesh."""
+    return read_list(mesh_file(case, "points")).reshape(-1, 3)
+
+
+def read_labels(case, name):
+    """A label list of an ASCII constant/polyMesh (owner, neighbour) as integers."""
+    return read_list(mesh_file(case, name)).astype(int)
+
+
+def read_faces(case, start=0, count=None):
+    """Faces of an ASCII constant/polyMesh, each an array of point labels:
+    all of them, or count faces from start (a patch's)."""
+    path = mesh_file(case, "faces")
+    with open(path, "rb") as f:
+        text = f.read()
+    m = re.search(rb"\n(\d+)\s*\n\(", text)
+    if not m:
+        raise ValueError(f"{path}: no ASCII list")
+    faces = re.findall(rb"\d+\(([^()]*)\)", text[m.end():text.rindex(b")")])
+    stop = None if count is None else start + count
+    return [np.array(face.split(), int) for face in faces[start:stop]]
 
 
 _POSITION = re.compile(rb"\(([^()]*)\)\s+(-?\d+)")

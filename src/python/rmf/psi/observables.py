@@ -1,19 +1,7 @@
 # rarefiedMultiphaseFoam. Copyright (C) 2026 The rarefiedMultiphaseFoam authors
 # SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
-"""Plume-surface interaction observables (doc/physics.md 7.2).
-
-    /usr/bin/python3 -m rmf.psi CASE [--output DIR] [--times T ...]
-    /usr/bin/python3 -m rmf.psi --compare CASE1 CASE2 ... [--labels L ...]
-                                [--output DIR]
-    options: --dr M (crater annuli before merging), --dx M (slabs of the
-    dense layer), --shell M (crossing shell half
-    width), --radial-weight W R (parcels weighted implicitly by radius)
-
-The first form writes PNGs and summary.md to DIR (default CASE/observables);
-the second puts the cases side by side at equal physical times (the times
-written by every case; when there are none, each case's time nearest to
-the first case's) and writes compare_*.png and summary.md to DIR (default
-./psiCompare).
+"""Plume-surface interaction observables: the computations (doc/physics.md
+7.2), on a case or on arrays; rmf.psi re-exports them.
 
 Case (the tutorial tutorials/psi/apolloScaledPSI): a wedge about the x
 axis, y radial; nozzle exit at x = 0, the plume flows in +x onto the wall
@@ -120,12 +108,10 @@ gives None for that observable and a note saying why; summary.md lists
 the notes and writes "n/a" in the tables, never NaN.
 """
 
-import argparse
 import math
 import os
 import re
 import subprocess
-import sys
 
 import numpy as np
 
@@ -163,12 +149,7 @@ def read_settings(case):
     path = os.path.join(case, "system", "observablesDict")
     if not os.path.exists(path):
         raise FileNotFoundError(f"{path}: missing (needs {', '.join(SETTINGS)})")
-    with open(path) as f:
-        text = f.read()
-    text = re.sub(r"/\*.*?\*/", " ", text, flags=re.S)
-    text = re.sub(r"//[^\n]*", " ", text)
-    text = re.sub(r"FoamFile\s*\{[^}]*\}", " ", text)
-    entries = dict(re.findall(r"(\w+)\s+([^;{}\s]+)\s*;", text))
+    entries = foam.read_dict(path)
     missing = [k for k in SETTINGS if k not in entries]
     if missing:
         raise KeyError(f"{path}: missing {', '.join(missing)}")
@@ -235,39 +216,23 @@ def mesh(case):
     return dict(C=C, x=C[:, 0], r=radius(C), n=len(C))
 
 
-def _list_body(path):
-    """Text between the brackets of an ASCII list file (faces, owner)."""
-    with open(path, "rb") as f:
-        text = f.read()
-    m = re.search(rb"\n(\d+)\s*\n\(", text)
-    if not m:
-        raise ValueError(f"{path}: no ASCII list")
-    return int(m.group(1)), text[m.end():text.rindex(b")")]
-
-
 def meridian_cells(case):
     """Outline of every cell on the meridian plane, (x, r) polygons, from
     the faces of the mesh's first wedge patch (one per cell), or None when
     the mesh has no wedge patch or is not written in ASCII."""
-    mesh_dir = os.path.join(case, "constant", "polyMesh")
     try:
-        with open(os.path.join(mesh_dir, "boundary")) as f:
-            boundary = f.read()
-        m = re.search(r"\{[^{}]*type\s+wedge;[^{}]*\}", boundary)
-        if not m:
+        wedges = [p for p in foam.read_boundary(case).values() if p.get("type") == "wedge"]
+        if not wedges:
             return None
-        n_faces = int(re.search(r"nFaces\s+(\d+);", m.group(0)).group(1))
-        start = int(re.search(r"startFace\s+(\d+);", m.group(0)).group(1))
-        points = foam.read_list(os.path.join(mesh_dir, "points")).reshape(-1, 3)
-        _, body = _list_body(os.path.join(mesh_dir, "faces"))
-        faces = re.findall(rb"\d+\(([^)]*)\)", body)[start:start + n_faces]
-        _, body = _list_body(os.path.join(mesh_dir, "owner"))
-        owner = np.array(body.split(), int)[start:start + n_faces]
-    except (OSError, ValueError, AttributeError, IndexError):
+        n_faces, start = int(wedges[0]["nFaces"]), int(wedges[0]["startFace"])
+        points = foam.read_points(case)
+        faces = foam.read_faces(case, start, n_faces)
+        owner = foam.read_labels(case, "owner")[start:start + n_faces]
+    except (OSError, ValueError, KeyError, IndexError):
         return None
     polygons = [None]*(owner.max() + 1 if len(owner) else 0)
     for cell, face in zip(owner, faces):
-        pts = points[np.array(face.split(), int)]
+        pts = points[face]
         polygons[cell] = np.stack([pts[:, 0], np.hypot(pts[:, 1], pts[:, 2])], -1)
     return polygons
 
@@ -696,8 +661,7 @@ def density_note(case, name):
         return (f"shock from {name}: one step's simulators (no time average "
                 "written: noisy)")
     try:
-        with open(os.path.join(case, "system", "controlDict")) as f:
-            text = re.sub(r"//[^\n]*", " ", f.read())
+        text = foam.dict_text(os.path.join(case, "system", "controlDict"))
     except OSError:
         text = ""
     if re.search(r"restartOnOutput\s+(true|on|yes)\s*;", text):
@@ -707,35 +671,11 @@ def density_note(case, name):
             "without restartOnOutput: the standoff of the time-averaged flow)")
 
 
+# ------------------------------------------------ reading an analysis ----
+
 def _get(row, key, sub):
     item = row.get(key)
     return None if item is None else item.get(sub)
-
-
-# Columns of the per-time table: (header, key, sub-key, scale, format)
-COLUMNS = (
-    ("t [us]", None, None, 1e6, "{:.4g}"),
-    ("real grains", "grains", None, 1, "{:.4g}"),
-    ("surface drop axis [mm]", "crater", "surface_drop", 1e3, "{:.3f}"),
-    ("+- [mm]", "crater", "surface_drop_sigma", 1e3, "{:.3f}"),
-    ("crater depth [mm]", "crater", "max_depth", 1e3, "{:.3f}"),
-    ("+- [mm]", "crater", "max_depth_sigma", 1e3, "{:.3f}"),
-    ("at r [mm]", "crater", "r_max", 1e3, "{:.2f}"),
-    ("crater radius [mm]", "crater", "radius", 1e3, "{:.2f}"),
-    ("eroded axis", "crater", "eroded_axis", 1, "{:.3f}"),
-    ("eroded layer", "crater", "eroded_layer", 1, "{:.4f}"),
-    ("shock standoff [mm]", "shock", "standoff", 1e3, "{:.3f}"),
-    ("ejection angle mean [deg]", "angles", "mean", 1, "{:.1f}"),
-    ("median [deg]", "angles", "median", 1, "{:.1f}"),
-    ("ejecta mean speed [m/s]", "speeds", "ejecta_mean", 1, "{:.2f}"),
-    ("ejecta max speed [m/s]", "speeds", "ejecta_max", 1, "{:.2f}"),
-    ("toward axis (flux)", "crossing", "fraction_toward", 1, "{:.3f}"),
-    ("toward axis (grains)", "crossing", "fraction_toward_grains", 1, "{:.3f}"),
-    ("max alpha", "alpha", "max", 1, "{:.4g}"),
-    ("min Kn_p stagnation", "knp_min", "min", 1, "{:.3g}"),
-    ("T_p min [K]", "T", "min", 1, "{:.1f}"),
-    ("T_p max [K]", "T", "max", 1, "{:.1f}"),
-)
 
 
 def value(row, key, sub):
@@ -764,544 +704,9 @@ def last(analysis, key, sub):
     return None
 
 
-def _fmt(v, scale, form):
-    return "n/a" if v is None else form.format(v*scale)
-
-
-def table(rows, columns=COLUMNS):
-    lines = ["| " + " | ".join(c[0] for c in columns) + " |",
-             "|" + "---|"*len(columns)]
-    for r in rows:
-        lines.append("| " + " | ".join(_fmt(value(r, c[1], c[2]), c[3], c[4])
-                                       for c in columns) + " |")
-    return lines
-
-
-def key_numbers(analysis):
-    """Lines of the key numbers of a case (summary.md)."""
-    s = analysis["settings"]
-    rows = analysis["rows"]
-    out = []
-
-    def at_last(label, key, sub, scale, unit, form):
-        found = last(analysis, key, sub)
-        if found is None:
-            out.append(f"- {label}: n/a (never available, see the notes)")
-        else:
-            out.append(f"- {label}: {form.format(found[1]*scale)}{unit} at t = {found[0]} s")
-
-    H = 1e3*(s['surface'] - s['layerTop'])
-
-    def with_noise(label, sub, noise):
-        for r in reversed(rows):
-            v, e = value(r, "crater", sub), value(r, "crater", noise)
-            if v is not None and e is not None:
-                out.append(f"- {label}: {1e3*v:.3f} +- {1e3*e:.3f} mm at t = {r['time']} s")
-                return
-        out.append(f"- {label}: n/a (never available, see the notes)")
-
-    with_noise(f"Surface drop on the axis (the surface below the initial layer top, "
-               f"H = {H:.3g} mm, in the first annulus)", "surface_drop", "surface_drop_sigma")
-    with_noise(f"Crater depth (largest surface drop among the annuli where it is "
-               f"significant, z > {SIGNIFICANCE})", "max_depth", "max_depth_sigma")
-    at_last("Radius of the deepest annulus", "crater", "r_max", 1e3, " mm", "{:.2f}")
-    at_last("Crater radius (half depth)", "crater", "radius", 1e3, " mm", "{:.2f}")
-    at_last("Eroded real-grain fraction, axis annulus", "crater", "eroded_axis", 1, "",
-            "{:.3f}")
-    at_last("Eroded real-grain fraction, whole layer", "crater", "eroded_layer", 1, "",
-            "{:.4f}")
-    at_last("Shock standoff on the axis", "shock", "standoff", 1e3, " mm", "{:.3f}")
-    standoffs = series(analysis, "shock", "standoff")
-    if len(standoffs) > 1:
-        out.append(f"- Shock standoff over {len(standoffs)} times: "
-                   f"{1e3*standoffs[:, 1].min():.3f} to {1e3*standoffs[:, 1].max():.3f} mm")
-    at_last("Mean ejection angle (mass-weighted)", "angles", "mean", 1, " deg", "{:.1f}")
-    at_last("Median ejection angle", "angles", "median", 1, " deg", "{:.1f}")
-    at_last("Ejecta mean speed", "speeds", "ejecta_mean", 1, " m/s", "{:.2f}")
-    at_last("Ejecta max speed", "speeds", "ejecta_max", 1, " m/s", "{:.2f}")
-    at_last(f"Fraction crossing r = {1e3*s['crossingRadius']:g} mm toward the axis "
-            "(flux-weighted)", "crossing", "fraction_toward", 1, "", "{:.3f}")
-    found = last(analysis, "crossing", "fraction_toward")
-    if found:
-        out.append(f"- Fraction away from the axis (flux-weighted): {1 - found[1]:.3f} "
-                   f"at t = {found[0]} s")
-    flux_in = sum(r["crossing"]["toward_flux"] for r in rows if r.get("crossing"))
-    flux_out = sum(r["crossing"]["away_flux"] for r in rows if r.get("crossing"))
-    if flux_in + flux_out > 0:
-        out.append(f"- Toward the axis, pooled over the written times: "
-                   f"{flux_in/(flux_in + flux_out):.3f}")
-    alphas = series(analysis, "alpha", "max")
-    if len(alphas):
-        i = int(np.argmax(alphas[:, 1]))
-        out.append(f"- Max alpha over time: {alphas[i, 1]:.4g} at t = {alphas[i, 0]:.4g} s")
-    else:
-        out.append("- Max alpha: n/a (no alpha.grains written)")
-    at_last("Min Kn_p near the stagnation region", "knp_min", "min", 1, "", "{:.3g}")
-    Ts = [r["T"] for r in rows if r.get("T")]
-    if Ts:
-        out.append(f"- T_p range over all times: {min(T['min'] for T in Ts):.1f} to "
-                   f"{max(T['max'] for T in Ts):.1f} K")
-    else:
-        out.append("- T_p range: n/a (no parcel temperature written)")
-    return out
-
-
-def definitions(analysis):
-    """Definitions of the observables with this run's bins and options."""
-    s, o = analysis["settings"], analysis["options"]
-    H = s["surface"] - s["layerTop"]
-    dr = o["dr"] or s["nozzleRadius"]/8
-    first = next((r["crater"] for r in analysis["rows"] if r.get("crater")), None)
-    merged = (f"{len(first['r'])} annuli, the first {1e3*first['r_edges'][1]:.3g} mm wide"
-              if first else "no annulus")
-    weight = "nParticle"
-    if o["radial_weight"]:
-        W, R = o["radial_weight"]
-        weight = f"nParticle x (1 + ({W:g} - 1) r/{R:g} m)"
-    return [
-        f"- Real grains of a parcel: {weight}; every statistic is weighted by them "
-        "(ejection angle: by mass, real grains x d^3).",
-        f"- Crater: annuli of {1e3*dr:.3g} mm to r = {1e3*s['layerRadius']:.3g} mm merged "
-        f"outward to {MIN_PARCELS} parcels of the reference layer (time "
-        f"{analysis['reference']} s) each: {merged}; dense layer: slabs "
-        + (f"of {1e3*o['dx']:.3g} mm" if o["dx"] else
-           f"of H/n, n = reference parcels/{SLAB_PARCELS} (2 to 10),")
-        + f" up to the first of two in a row below {SURFACE_FRACTION} of the reference "
-        f"density (included); surface height h = Q_{SURFACE_QUANTILE}/{SURFACE_QUANTILE} of "
-        f"the dense grains' heights above the wall (real grains), noise sigma = "
-        f"h sqrt(q(1 - q)/N_eff)/q; surface drop = H - h, H = X_s - layerTop = "
-        f"{1e3*H:.3g} mm; crater depth = the largest drop among the annuli where it is "
-        f"significant (count test: q N_eff over Binomial(N_eff, q h/H), z > {SIGNIFICANCE}; "
-        "0 +- the median sigma if none); crater radius: where the "
-        "drop falls to half of it outward; eroded fraction = 1 - dense real grains / "
-        "reference real grains (axis annulus; whole layer).",
-        f"- Shock: per x, the radius-weighted mean of the cells within {AXIS_BAND} "
-        f"nozzleRadius of the axis (the nearest one if none; columns beyond {AXIS_FRACTION} "
-        f"nozzleRadius left out), {SMOOTH_CELLS}-cell running mean of the first of "
-        f"{', '.join(DENSITIES)}; stagnation peak: the maximum in the {PEAK_REGION:g} of "
-        f"the gap next to the surface; shock layer: the cells ending at the peak above "
-        f"{SHOCK_RISE}x the {JET_QUANTILE} quantile (dips < {SHOCK_SUSTAIN} cells; at least "
-        f"{SHOCK_SUSTAIN} cells, else no shock); shock where the profile rises through "
-        "the midpoint of the jet minimum and the layer's median; standoff = X_s - x_shock.",
-        "- Ejecta: parcels with x < layerTop and U_x < 0; ejection angle = "
-        "atan2(-U_x, sqrt(U_y^2 + U_z^2)) above the surface.",
-        f"- Crossing: real grains within {1e3*o['shell']:g} mm of r = "
-        f"{1e3*s['crossingRadius']:g} mm; toward the axis (flux) = sum(w |v_r|) over "
-        "v_r < 0 / sum(w |v_r|) (fraction of the crossings per unit time); "
-        "(grains) = real grains with v_r < 0 over those with v_r != 0.",
-        "- Kn_p: Knp.grains (else lambda.gas / real-grain mean d in the cell); "
-        f"stagnation region: r <= nozzleRadius, height <= shock standoff "
-        f"({1e3*STAGNATION_HEIGHT:g} mm without a shock).",
-    ]
-
-
-# -------------------------------------------------------------- plots ----
-
-def _plt():
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-    return plt
-
-
-def pick_times(analysis, wanted=None, count=HISTOGRAM_TIMES):
-    """Rows to show in profiles and histograms: the named times, else up to
-    count times with parcels evenly spread, the last included."""
-    rows = [r for r in analysis["rows"] if r.get("p") is not None]
-    if wanted:
-        chosen = [nearest_row(analysis, float(t)) for t in wanted]
-        return [r for r in chosen if r is not None]
-    if len(rows) <= count:
-        return rows
-    index = np.unique(np.round(np.linspace(0, len(rows) - 1, count)).astype(int))
-    return [rows[i] for i in index]
-
-
 def nearest_row(analysis, t):
+    """The row of the time nearest to t, or None when there is none."""
     rows = analysis["rows"]
     if not rows:
         return None
     return min(rows, key=lambda r: abs(r["t"] - t))
-
-
-def plot_crater(ax, analysis, rows, title=None):
-    s = analysis["settings"]
-    H = s["surface"] - s["layerTop"]
-    ax.axhline(1e3*H, color="0.5", linestyle="--", label="initial layer top")
-    for r in rows:
-        c = r.get("crater")
-        if c is None:
-            continue
-        line = ax.stairs(1e3*c["height"], 1e3*c["r_edges"], baseline=None,
-                         label=f"t = {r['time']} s")
-        ax.stairs(1e3*(c["height"] + c["sigma"]), 1e3*c["r_edges"],
-                  baseline=1e3*(c["height"] - c["sigma"]), fill=True, alpha=0.2,
-                  color=line.get_edgecolor())
-    ax.axvline(1e3*s["nozzleRadius"], color="0.7", linestyle=":", label="nozzle radius")
-    ax.set_xlabel("r [mm]")
-    ax.set_ylabel("dust surface height above the wall [mm] (band: +- sigma)")
-    ax.set_ylim(bottom=0)
-    ax.grid(alpha=0.3)
-    ax.legend(fontsize=7)
-    if title:
-        ax.set_title(title)
-
-
-def plot_histogram(ax, rows, key, values, weights, xlabel, bins=40, span=None):
-    """Real-grain (or mass) fraction per bin, one step line per row."""
-    data = [(r, r[key]) for r in rows if r.get(key) is not None
-            and r[key].get(values) is not None and len(r[key][values])]
-    if not data:
-        ax.text(0.5, 0.5, f"no {values} data at these times", ha="center",
-                transform=ax.transAxes)
-        return
-    if span is None:
-        lo = min(d[values].min() for _, d in data)
-        hi = max(d[values].max() for _, d in data)
-        span = (lo, hi if hi > lo else lo + 1)
-    edges = np.linspace(span[0], span[1], bins + 1)
-    for r, d in data:
-        h, _ = np.histogram(d[values], edges, weights=d[weights])
-        ax.stairs(h/max(h.sum(), 1e-300), edges, label=f"t = {r['time']} s")
-    ax.set_xlabel(xlabel)
-    ax.grid(alpha=0.3)
-    ax.legend(fontsize=7)
-
-
-def plot_knp(ax, fig, analysis, row, title=None, span=None):
-    """Kn_p map on the (r, height) plane, log colours (over span when
-    given: one scale for the cases of a comparison)."""
-    from matplotlib import colors, tri as mtri
-    knp = row.get("knp") if row else None
-    if knp is None or not (knp > 0).any():
-        ax.text(0.5, 0.5, "no Kn_p (no grains or no field)", ha="center",
-                transform=ax.transAxes)
-        return
-    s, cells = analysis["settings"], analysis["cells"]
-    positive = knp[knp > 0]
-    lo, hi = span or (positive.min(), positive.max())
-    norm = colors.LogNorm(vmin=lo, vmax=max(hi, lo*1.01))
-    polygons = analysis.get("polygons")
-    if polygons is not None and len(polygons) == len(knp):
-        from matplotlib.collections import PolyCollection
-        show = np.nonzero(knp > 0)[0]
-        art = PolyCollection([np.stack([1e3*polygons[i][:, 1],
-                                        1e3*(s["surface"] - polygons[i][:, 0])], -1)
-                              for i in show], array=knp[show], norm=norm, cmap="viridis",
-                             edgecolors="face", linewidths=0.2)
-        ax.add_collection(art)
-        outline = np.concatenate(polygons)
-        ax.set_xlim(0, 1e3*outline[:, 1].max())
-        ax.set_ylim(1e3*(s["surface"] - outline[:, 0].max()),
-                    1e3*(s["surface"] - outline[:, 0].min()))
-    else:           # no wedge outline: interpolated between cell centres
-        height = 1e3*(s["surface"] - cells["x"])
-        triangles = mtri.Triangulation(1e3*cells["r"], height)
-        bad = ~(knp > 0)
-        triangles.set_mask(bad[triangles.triangles].any(axis=1))
-        art = ax.tripcolor(triangles, np.where(bad, positive.min(), knp), norm=norm,
-                           shading="gouraud", cmap="viridis")
-    ax.axvline(1e3*s["nozzleRadius"], color="0.6", linestyle=":", linewidth=0.8)
-    shock = row.get("shock")
-    if shock and shock.get("standoff") is not None:
-        ax.axhline(1e3*shock["standoff"], color="0.4", linestyle="--", linewidth=0.8)
-    fig.colorbar(art, ax=ax, label=r"Kn$_p$ = $\lambda$/d$_p$")
-    ax.set_xlabel("r [mm]")
-    ax.set_ylabel("height above the surface [mm]")
-    ax.set_aspect("equal")
-    ax.set_title(title or f"Kn_p, t = {row['time']} s ({row['knp_source']})\n"
-                 "dashed: shock; dotted: nozzle radius", fontsize=9)
-
-
-TIMESERIES = (
-    ("crater [mm]", (("crater", "surface_drop", 1e3, "surface drop, axis"),
-                     ("crater", "max_depth", 1e3, "depth (max, significant)"))),
-    ("shock standoff [mm]", (("shock", "standoff", 1e3, "axis"),)),
-    ("max alpha", (("alpha", "max", 1, "max alpha"),)),
-    ("ejection angle [deg]", (("angles", "mean", 1, "mean"), ("angles", "median", 1, "median"))),
-    ("ejecta speed [m/s]", (("speeds", "ejecta_mean", 1, "mean"),
-                            ("speeds", "ejecta_max", 1, "max"))),
-    ("fraction toward the axis", (("crossing", "fraction_toward", 1, "flux"),
-                                  ("crossing", "fraction_toward_grains", 1, "grains"))),
-)
-
-
-def plot_timeseries(axes, analysis, label=None, color=None):
-    """The TIMESERIES panels; a case's curves in one colour when given
-    (first curve of a panel solid, second dashed)."""
-    for ax, (ylabel, curves) in zip(axes.ravel(), TIMESERIES):
-        for (key, sub, scale, name), style in zip(curves, ("-", "--")):
-            s = series(analysis, key, sub)
-            if len(s):
-                ax.plot(1e6*s[:, 0], scale*s[:, 1], style, color=color, marker="o",
-                        markersize=3, label=f"{label}: {name}" if label else name)
-        ax.set_xlabel("t [us]")
-        ax.set_ylabel(ylabel)
-        ax.grid(alpha=0.3)
-        if ax.lines:
-            ax.legend(fontsize=7)
-
-
-def plot_case(analysis, output, wanted=None):
-    """The PNGs of one case in output; returns their names."""
-    plt = _plt()
-    os.makedirs(output, exist_ok=True)
-    rows = pick_times(analysis, wanted)
-    s = analysis["settings"]
-    written = []
-
-    def save(fig, name):
-        fig.savefig(os.path.join(output, name), dpi=110)
-        plt.close(fig)
-        written.append(name)
-
-    fig, ax = plt.subplots(figsize=(7, 4.5), constrained_layout=True)
-    plot_crater(ax, analysis, rows, "Dust surface (crater profile)")
-    save(fig, "crater_profile.png")
-
-    fig, axes = plt.subplots(2, 3, figsize=(13, 7), constrained_layout=True)
-    plot_timeseries(axes, analysis)
-    save(fig, "timeseries.png")
-
-    fig, ax = plt.subplots(figsize=(7, 4.5), constrained_layout=True)
-    gas_rows = [r for r in analysis["rows"] if r.get("axis") is not None]
-    shown = [gas_rows[i] for i in np.unique(np.round(np.linspace(
-        0, len(gas_rows) - 1, min(HISTOGRAM_TIMES, len(gas_rows)))).astype(int))] \
-        if gas_rows else []
-    for r in shown:
-        x, rho = r["axis"]
-        line, = ax.plot(1e3*(s["surface"] - x), rho, label=f"t = {r['time']} s")
-        if r["shock"]["standoff"] is not None:
-            ax.axvline(1e3*r["shock"]["standoff"], color=line.get_color(), linestyle="--")
-    if not shown:
-        ax.text(0.5, 0.5, "no gas density written", ha="center", transform=ax.transAxes)
-    ax.set_xlabel("height above the surface on the axis [mm] (dashed: shock)")
-    ax.set_ylabel(f"gas density ({shown[-1]['shock']['field'] if shown else 'rhoN'}), "
-                  f"rows within {AXIS_BAND} nozzleRadius "
-                  "[1/m^3 or kg/m^3]")
-    ax.set_yscale("log")
-    ax.grid(alpha=0.3)
-    if shown:
-        ax.legend(fontsize=7)
-    save(fig, "axis_density.png")
-
-    fig, ax = plt.subplots(figsize=(7, 4.5), constrained_layout=True)
-    plot_histogram(ax, rows, "angles", "angle", "weight", "ejection angle above the surface [deg]",
-                   bins=18, span=(0, 90))
-    ax.set_ylabel("mass fraction of the ejecta")
-    save(fig, "ejection_angle.png")
-
-    fig, (ax, ax_e) = plt.subplots(1, 2, figsize=(12, 4.5), constrained_layout=True)
-    plot_histogram(ax, rows, "speeds", "speed", "weight", "grain speed |U| [m/s]")
-    ax.set_ylabel("fraction of the real grains")
-    ax.set_yscale("log")
-    ax.set_title("all grains")
-    plot_histogram(ax_e, rows, "speeds", "ejecta_speed", "ejecta_weight",
-                   "ejecta speed |U| [m/s]")
-    ax_e.set_ylabel("fraction of the ejecta's real grains")
-    ax_e.set_title("ejecta (x < layerTop, U_x < 0)")
-    save(fig, "speed_histogram.png")
-
-    fig, ax = plt.subplots(figsize=(7, 4.5), constrained_layout=True)
-    plot_histogram(ax, rows, "T", "T", "weight", "grain temperature T_p [K]")
-    ax.set_ylabel("fraction of the real grains")
-    save(fig, "Tp_histogram.png")
-
-    knp_rows = [r for r in analysis["rows"] if r.get("knp") is not None]
-    fig, ax = plt.subplots(figsize=(7, 5), constrained_layout=True)
-    plot_knp(ax, fig, analysis, knp_rows[-1] if knp_rows else None)
-    save(fig, "knp_map.png")
-    return written
-
-
-# ------------------------------------------------------------ reports ----
-
-def write_summary(analysis, output, pngs):
-    s = analysis["settings"]
-    lines = [f"# Plume-surface interaction observables: {os.path.abspath(analysis['case'])}",
-             "",
-             f"Settings (system/observablesDict): surface X_s = {s['surface']} m, "
-             f"nozzleRadius = {s['nozzleRadius']} m, layerTop = {s['layerTop']} m, "
-             f"layerRadius = {s['layerRadius']} m, crossingRadius = {s['crossingRadius']} m; "
-             f"crater reference time {analysis['reference']} s.",
-             "", "## Key numbers", ""]
-    lines += key_numbers(analysis)
-    lines += ["", "## Values against time", ""]
-    lines += table(analysis["rows"])
-    lines += ["", "## Definitions", ""] + definitions(analysis)
-    lines += ["", "## Notes", ""] + ([f"- {n}" for n in analysis["notes"]] or ["- none"])
-    lines += ["", "## Figures", ""] + [f"- {p}" for p in pngs]
-    path = os.path.join(output, "summary.md")
-    with open(path, "w") as f:
-        f.write("\n".join(lines) + "\n")
-    return path
-
-
-def run_case(case, output=None, wanted=None, **options):
-    output = output or os.path.join(case, "observables")
-    analysis = analyse(case, **options)
-    pngs = plot_case(analysis, output, wanted)
-    return write_summary(analysis, output, pngs), analysis
-
-
-def common_times(analyses):
-    """Times to compare the cases at, and whether every case wrote them:
-    the times written by every case when at least two of them hold parcels
-    in every case; else the first case's times with parcels, each case
-    then taken at its own nearest time."""
-    sets = [[r["t"] for r in a["rows"]] for a in analyses]
-    first = sets[0]
-    scale = max(max(abs(t) for t in first), 1e-30)
-    common = [t for t in first
-              if all(any(abs(t - u) <= 1e-9*scale for u in other) for other in sets[1:])]
-    if len(_with_parcels(analyses, common)) >= 2 or len(analyses) == 1:
-        return common, True
-    return [r["t"] for r in analyses[0]["rows"] if r.get("p") is not None] or first, False
-
-
-def _with_parcels(analyses, times):
-    return [t for t in times
-            if all((nearest_row(a, t) or {}).get("p") is not None for a in analyses)]
-
-
-def compare(cases, labels, output, **options):
-    """Side-by-side plots and summary of several cases at equal times."""
-    plt = _plt()
-    os.makedirs(output, exist_ok=True)
-    analyses = [analyse(c, **options) for c in cases]
-    common, exact = common_times(analyses)
-    # the common times with parcels in every case, up to HISTOGRAM_TIMES of them
-    shown = _with_parcels(analyses, common)
-    if len(shown) > HISTOGRAM_TIMES:
-        shown = [shown[i] for i in np.unique(np.round(np.linspace(
-            0, len(shown) - 1, HISTOGRAM_TIMES)).astype(int))]
-    pngs = []
-    ncol = len(cases)
-
-    def save(fig, name):
-        fig.savefig(os.path.join(output, name), dpi=110)
-        plt.close(fig)
-        pngs.append(name)
-
-    fig, axes = plt.subplots(1, ncol, figsize=(5*ncol, 4.5), squeeze=False,
-                             sharey=True, constrained_layout=True)
-    for ax, a, label in zip(axes[0], analyses, labels):
-        plot_crater(ax, a, [nearest_row(a, t) for t in shown], label)
-    save(fig, "compare_crater.png")
-
-    fig, axes = plt.subplots(2, 3, figsize=(13, 7), constrained_layout=True)
-    for i, (a, label) in enumerate(zip(analyses, labels)):
-        plot_timeseries(axes, a, label, f"C{i % 10}")
-    save(fig, "compare_timeseries.png")
-
-    for name, key, values, weights, xlabel, span, ylabel in (
-            ("compare_speed.png", "speeds", "speed", "weight", "grain speed |U| [m/s]",
-             None, "fraction of the real grains"),
-            ("compare_ejecta_speed.png", "speeds", "ejecta_speed", "ejecta_weight",
-             "ejecta speed |U| [m/s]", None, "fraction of the ejecta's real grains"),
-            ("compare_ejection_angle.png", "angles", "angle", "weight",
-             "ejection angle above the surface [deg]", (0, 90), "mass fraction of the ejecta"),
-            ("compare_Tp.png", "T", "T", "weight", "grain temperature T_p [K]", None,
-             "fraction of the real grains")):
-        rows = [[nearest_row(a, t) for t in shown] for a in analyses]
-        if span is None:
-            data = [r[key][values] for rr in rows for r in rr
-                    if r and r.get(key) and r[key].get(values) is not None
-                    and len(r[key][values])]
-            span = (min(d.min() for d in data), max(d.max() for d in data)) if data else None
-            if span and span[1] <= span[0]:
-                span = (span[0], span[0] + 1)
-        fig, axes = plt.subplots(1, ncol, figsize=(5*ncol, 4), squeeze=False, sharey=True,
-                                 constrained_layout=True)
-        for ax, rr, label in zip(axes[0], rows, labels):
-            plot_histogram(ax, rr, key, values, weights, xlabel,
-                           bins=18 if key == "angles" else 40, span=span)
-            ax.set_title(label)
-            if values == "speed":
-                ax.set_yscale("log")     # the resting layer dwarfs the ejecta
-        axes[0, 0].set_ylabel(ylabel)
-        save(fig, name)
-
-    t_knp = shown[-1] if shown else (common[-1] if common else None)
-    fig, axes = plt.subplots(1, ncol, figsize=(5*ncol, 4.5), squeeze=False,
-                             constrained_layout=True)
-    knp_rows = [nearest_row(a, t_knp) if t_knp is not None else None for a in analyses]
-    positive = [r["knp"][r["knp"] > 0] for r in knp_rows
-                if r and r.get("knp") is not None and (r["knp"] > 0).any()]
-    span = (min(k.min() for k in positive), max(k.max() for k in positive)) if positive else None
-    for ax, a, row, label in zip(axes[0], analyses, knp_rows, labels):
-        plot_knp(ax, fig, a, row, f"{label}: Kn_p, t = {row['time'] if row else 'n/a'} s", span)
-    save(fig, "compare_knp.png")
-
-    lines = ["# Plume-surface interaction: comparison", ""]
-    lines += [f"- {label}: {os.path.abspath(c)}" for label, c in zip(labels, cases)]
-    lines += ["", ("Times written by every case: " if exact else
-                   "Fewer than two times with parcels written by every case: each case "
-                   f"at its time nearest to {labels[0]}'s (its own time in the table): ")
-              + ", ".join(f"{t:g}" for t in common) + " s",
-              "Profiles and histograms at: "
-              + (", ".join(f"{t:g}" for t in shown) + " s" if shown else
-                 "none (no time with parcels in every case)"),
-              ""]
-    columns = (("case", None, None, 1, "{}"),) + COLUMNS
-    lines += ["## Values at the compared times (each case at its own t)", "",
-              "| " + " | ".join(c[0] for c in columns) + " |", "|" + "---|"*len(columns)]
-    for t in common:
-        for a, label in zip(analyses, labels):
-            r = nearest_row(a, t)
-            cells = [label] + [_fmt(value(r, c[1], c[2]), c[3], c[4]) for c in COLUMNS]
-            lines.append("| " + " | ".join(cells) + " |")
-    for a, label in zip(analyses, labels):
-        lines += ["", f"## Key numbers: {label}", ""] + key_numbers(a)
-        if a["notes"]:
-            lines += ["", f"Notes ({label}):"] + [f"- {n}" for n in a["notes"]]
-    lines += ["", "## Definitions", ""] + definitions(analyses[0])
-    lines += ["", "## Figures", ""] + [f"- {p}" for p in pngs]
-    path = os.path.join(output, "summary.md")
-    with open(path, "w") as f:
-        f.write("\n".join(lines) + "\n")
-    return path, analyses
-
-
-def main(argv=None):
-    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    parser.add_argument("cases", nargs="*", help="case directory")
-    parser.add_argument("--compare", nargs="+", metavar="CASE",
-                        help="cases to compare at equal times")
-    parser.add_argument("--labels", nargs="+")
-    parser.add_argument("--output", help="directory for the PNGs and summary.md")
-    parser.add_argument("--times", nargs="+", help="times of the profiles and histograms")
-    parser.add_argument("--dr", type=float, help="crater annulus width before merging to 100 parcels [m]")
-    parser.add_argument("--dx", type=float, help="slab height of the crater's dense-layer criterion [m]")
-    parser.add_argument("--shell", type=float, default=SHELL,
-                        help="half width of the crossing shell [m]")
-    parser.add_argument("--radial-weight", nargs=2, type=float, metavar=("W", "R"),
-                        help="parcels carry the implicit radial weight 1 + (W-1) r/R")
-    args = parser.parse_args(argv)
-    try:
-        report(args)
-    except (OSError, KeyError, ValueError, RuntimeError) as error:
-        sys.exit(f"psi: {error}")
-
-
-def report(args):
-    options = dict(dr=args.dr, dx=args.dx, shell=args.shell, radial_weight=args.radial_weight)
-    if args.compare:
-        cases = args.compare + args.cases
-        labels = args.labels or [os.path.basename(os.path.abspath(c)) for c in cases]
-        if len(labels) != len(cases):
-            sys.exit(f"psi: {len(cases)} cases but {len(labels)} labels")
-        path, _ = compare(cases, labels, args.output or "psiCompare", **options)
-    else:
-        if len(args.cases) != 1:
-            sys.exit("psi: one CASE (or --compare CASE ...)")
-        path, analysis = run_case(args.cases[0], args.output, args.times, **options)
-        for n in analysis["notes"]:
-            print(f"psi: note: {n}")
-    print(f"psi: wrote {path}")
-    with open(path) as f:
-        print(f.read())
-
-
-if __name__ == "__main__":
-    main()

@@ -1,7 +1,8 @@
 # rarefiedMultiphaseFoam. Copyright (C) 2026 The rarefiedMultiphaseFoam authors
 # SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
 """The one-cell periodic gas box of validation/freeMolecularCoupling/box,
-shared by the coupling tests.
+shared by the coupling tests (test support: on sys.path through the
+top-level conftest.py).
 
 One hexahedral cell (0.1 x 0.08 x 0.08 m), cyclic in every direction: the
 gas neither gains nor loses simulators, momentum or energy by itself.
@@ -12,9 +13,8 @@ tutorial (same patch names).
 
 import os
 import shutil
-import subprocess
 
-from . import foam
+from rmf import foam
 
 BOX = os.path.join(foam.PROJECT_DIR, "validation", "freeMolecularCoupling", "box")
 PROPS = "constant/grainsProperties"
@@ -29,12 +29,6 @@ ZETA = {"Ar": 0, "N2": 2}                   # internal degrees of freedom
 V_CELL = 0.1*0.08*0.08                      # [m^3]
 
 
-def remove(case, dict_path, entry):
-    """Remove one entry of a case dictionary."""
-    subprocess.run(["foamDictionary", "-entry", entry, "-remove", dict_path],
-                   cwd=case, check=True, stdout=subprocess.DEVNULL)
-
-
 def copy_box(dst, species="Ar", n_gas=1e20, eps=0.0, alpha=1.0, coupling="oneWay"):
     """Fresh set-up of the box in dst (not meshed or filled): one gas
     species at number density n_gas, the grains' specular fraction eps,
@@ -45,7 +39,7 @@ def copy_box(dst, species="Ar", n_gas=1e20, eps=0.0, alpha=1.0, coupling="oneWay
                     os.path.join(case, "0"))
     if species != "Ar":
         foam.set_entry(case, GAS, "typeIdList", f"({species})")
-        remove(case, FILL, "numberDensities/Ar")
+        foam.remove_entry(case, FILL, "numberDensities/Ar")
     foam.set_entry(case, FILL, f"numberDensities/{species}", f"{n_gas:g}")
     foam.set_entry(case, PROPS, "constantProperties/specularFraction", eps)
     foam.set_entry(case, PROPS, "constantProperties/thermalAccommodation", alpha)
