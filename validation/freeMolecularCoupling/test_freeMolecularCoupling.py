@@ -287,6 +287,45 @@ def test_mean_free_path(omega):
         assert abs(knp/(lam/D_GRAIN) - 1) < 1e-6, (knp, lam/D_GRAIN)
 
 
+def test_mean_free_path_gas_only():
+    """lambda.gas is the gas's own output: without grains (no
+    constant/grainsProperties) the gas writes it too.  The gas draws from
+    its own stream and oneWay does not change it, so the gas-only run's
+    lambda.gas must be byte for byte the with-grains run's (same fill, same
+    steps), and within 1 % of the nominal VHS value (the tolerance of
+    test_mean_free_path, same origin)."""
+    omega = 0.81
+    runs = {}
+    for name, grains in (("lambda_gasOnly", False), ("lambda_withGrains", True)):
+        case = make_case(name)
+        foam.set_entry(case, GAS, "moleculeProperties/Ar/omega", omega)
+        foam.set_entry(case, "system/controlDict", "endTime", "2e-3")
+        foam.set_entry(case, "system/controlDict", "writeInterval", 100)
+        if not grains:
+            os.remove(os.path.join(case, PROPS))
+        foam.run(case, "rarefiedMultiphaseFoam")
+        runs[name] = case
+
+    gas_only, with_grains = runs["lambda_gasOnly"], runs["lambda_withGrains"]
+    times = [t for t in foam.times(gas_only) if float(t) > 0]
+    assert times == [t for t in foam.times(with_grains) if float(t) > 0], times
+    assert len(times) == 2, times
+    nominal = 1/(math.sqrt(2)*math.pi*D_REF**2*N_GAS*(T_REF/T_GAS)**(omega - 0.5))
+    for t in times:
+        a = os.path.join(gas_only, t, "lambda.gas")
+        b = os.path.join(with_grains, t, "lambda.gas")
+        assert not os.path.exists(os.path.join(gas_only, t, "Knp.grains"))
+        same = open(a, "rb").read() == open(b, "rb").read()
+        lam = foam.read_field(a, 1)[0]
+        err = lam/nominal - 1
+        ok = same and abs(err) < 0.01
+        print(f"\n{'PASS' if ok else 'FAIL'} gas-only lambda at t = {t}: "
+              f"{lam:.6g} m, identical to the with-grains run: {same}; "
+              f"nominal VHS {nominal:.6g} m ({100*err:+.3f} %, tolerance 1 %)")
+        assert same
+        assert abs(err) < 0.01, err
+
+
 # ---------------------------------------------------------------------------
 # 5. A light grain relaxing in a uniform stream
 
