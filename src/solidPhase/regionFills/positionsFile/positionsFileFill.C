@@ -63,4 +63,10 @@ Foam::point Foam::regionFills::positionsFileFill::draw(const label i)
 }
 
 
+Foam::word Foam::regionFills::positionsFileFill::placedBy() const
+{
+    return "file";
+}
+
+
 // ************************************************************************* //

@@ -135,6 +135,12 @@ Foam::labelList Foam::regionFill::locate(const pointField& xs) const
 }
 
 
+Foam::word Foam::regionFill::placedBy() const
+{
+    return "type";
+}
+
+
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 Foam::scalar Foam::regionFill::alphaLimit
