@@ -46,7 +46,7 @@ turned back into the meridional plane, and are weighted radially.
    radius.
 
 4. Placement by the initialiser, which finds the cells of all drawn points
-   by walks from cell to cell (solidInitialise.H, locate), on a fine
+   by walks from cell to cell (mortonLocate), on a fine
    graded wedge (60 x 120 cells, radial grading 8; 20 000 parcels,
    sigmaU 1, maxRadialWeight 10): every parcel lies inside its cell, by a
    test independent of OpenFOAM's (each face plane of the cell, from

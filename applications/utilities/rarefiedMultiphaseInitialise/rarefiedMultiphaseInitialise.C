@@ -19,14 +19,99 @@ Description
     naming file, keyword and valid range.
 
     Solid grains: from system/<cloud>InitialiseDict (cloud name from
-    -cloud, default grains), see solidInitialise.H.  Each phase is filled
-    only when its dictionary exists.
+    -cloud, default grains): randomSeed and one region fill per entry of
+    regions, filled in turn from one random stream (see regionFill and
+    src/solidPhase/regionFills).  Each phase is filled only when its
+    dictionary exists.
+
+    Errors raised (FatalIOError, file/keyword/value/valid range): those of
+    the fills; randomSeed outside [0, 2000]; an entry of regions that is
+    not a dictionary.
 
 \*---------------------------------------------------------------------------*/
 
 #include "fvCFD.H"
 #include "gasCloud.H"
-#include "solidInitialise.H"
+#include "basicSolidCloud.H"
+#include "regionFill.H"
+#include "inputChecks.H"
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+// Fill the solid cloud of the case, if its initialisation dictionary exists
+static bool initialiseSolids(const fvMesh& mesh, const word& cloudName)
+{
+    IOobject header
+    (
+        cloudName + "InitialiseDict",
+        mesh.time().system(),
+        mesh,
+        IOobject::MUST_READ,
+        IOobject::NO_WRITE,
+        false
+    );
+
+    if (!header.typeHeaderOk<IOdictionary>(true))
+    {
+        return false;
+    }
+
+    basicSolidCloud::checkInput(cloudName, mesh);
+
+    const IOdictionary cloudProps
+    (
+        inputChecks::readCloudProperties(cloudName, mesh)
+    );
+    const basicSolidParcel::constantProperties constProps(cloudProps);
+    const axisymmetricMode axisymmetric(cloudProps, mesh, cloudName);
+
+    word alphaMaxWhat;
+    const scalar alphaMax = regionFill::alphaLimit(cloudProps, alphaMaxWhat);
+
+    const IOdictionary initDict(header);
+    const label seed =
+        inputChecks::getLabelOrDefault(initDict, "randomSeed", 0, 0, 2000);
+    Random rnd(seed*1000003 + 700001);
+
+    Info<< "Initialising solid cloud " << cloudName << " (seed " << seed
+        << ")" << nl;
+
+    Cloud<basicSolidParcel> cloud
+    (
+        mesh, cloudName, IDLList<basicSolidParcel>()
+    );
+
+    const regionFill::cloudSetup setup{mesh, constProps, axisymmetric, rnd};
+
+    label nTotal = 0;
+    const dictionary& regions = initDict.subDict("regions");
+    for (const entry& e : regions)
+    {
+        if (!e.isDict())
+        {
+            inputChecks::badValue
+            (
+                regions, e.keyword(), "not a dictionary",
+                "a dictionary per region"
+            );
+        }
+        nTotal += regionFill::New(e.dict(), setup)->fill
+        (
+            cloud, alphaMax, alphaMaxWhat
+        );
+    }
+
+    Info<< "Solid parcels added: " << nTotal << nl << endl;
+
+    if (!cloud.write())
+    {
+        FatalErrorInFunction
+            << "Failed writing cloud " << cloudName << exit(FatalError);
+    }
+
+    return true;
+}
+
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 

@@ -1,0 +1,259 @@
+/*---------------------------------------------------------------------------*\
+  rarefiedMultiphaseFoam
+  Copyright (C) 2026 The rarefiedMultiphaseFoam authors
+  SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
+
+\*---------------------------------------------------------------------------*/
+
+#include "regionFill.H"
+#include "mortonLocate.H"
+#include "inputChecks.H"
+#include "mathematicalConstants.H"
+
+using Foam::constant::mathematical::pi;
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    defineTypeNameAndDebug(regionFill, 0);
+    defineRunTimeSelectionTable(regionFill, dictionary);
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::regionFill::regionFill
+(
+    const dictionary& dict,
+    const cloudSetup& setup,
+    const bool hasAxisymmetricForm
+)
+:
+    dict_(dict),
+    mesh_(setup.mesh),
+    constProps_(setup.constProps),
+    axisymmetric_(setup.axisymmetric),
+    rnd_(setup.rnd),
+    d_(inputChecks::getPositive(dict, "d")),
+    U0_(dict.get<vector>("U0")),
+    sigmaU_
+    (
+        dict.found("sigmaU") ? inputChecks::getNonNegative(dict, "sigmaU") : 0
+    ),
+    T0_
+    (
+        dict.found("T0")
+      ? inputChecks::getPositive(dict, "T0")
+      : constProps_.T0()
+    ),
+    vParticle_(pi*pow3(d_)/6),
+    V_(0),
+    meanWeight_(1)
+{
+    if (axisymmetric_.active() && !hasAxisymmetricForm)
+    {
+        inputChecks::badValue
+        (
+            dict, "type", dict.get<word>("type"),
+            "box (x and radius ranges) with axisymmetric true"
+        );
+    }
+}
+
+
+// * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * * //
+
+Foam::point Foam::regionFill::uniform(const point& lo, const vector& span)
+{
+    return point(lo + cmptMultiply(rnd_.sample01<vector>(), span));
+}
+
+
+void Foam::regionFill::count
+(
+    const scalar alphaMax,
+    const word& alphaMaxWhat,
+    label& nParcels,
+    scalar& W
+) const
+{
+    using namespace inputChecks;
+
+    const bool hasAlpha = dict_.found("alpha0");
+    const bool hasW = dict_.found("nParticle");
+    const bool hasN = dict_.found("nParcels");
+
+    if (hasAlpha + hasW + hasN != 2)
+    {
+        badValue
+        (
+            dict_, "alpha0",
+            hasAlpha ? "given" : "absent",
+            "exactly two of alpha0, nParticle, nParcels"
+        );
+    }
+
+    if (hasN)
+    {
+        nParcels = label(getPositive(dict_, "nParcels"));
+    }
+
+    scalar alpha0 = 0;
+    if (hasAlpha)
+    {
+        alpha0 = dict_.get<scalar>("alpha0");
+        if (!(alpha0 > 0 && alpha0 < alphaMax))
+        {
+            outOfRange
+            (
+                dict_, "alpha0", alpha0, "(0, " + alphaMaxWhat + ")"
+            );
+        }
+    }
+
+    if (hasW)
+    {
+        W = getPositive(dict_, "nParticle");
+    }
+
+    if (!hasN)
+    {
+        nParcels =
+            label(std::round(alpha0*V_/(vParticle_*W*meanWeight_)));
+    }
+    else if (!hasW)
+    {
+        W = alpha0*V_/(vParticle_*nParcels*meanWeight_);
+    }
+}
+
+
+Foam::labelList Foam::regionFill::locate(const pointField& xs) const
+{
+    return mortonLocate(mesh_).cells(xs);
+}
+
+
+Foam::word Foam::regionFill::placedBy() const
+{
+    return "type";
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::scalar Foam::regionFill::alphaLimit
+(
+    const dictionary& cloudProps,
+    word& what
+)
+{
+    const dictionary& models = cloudProps.subDict("subModels");
+    const word packing(models.get<word>("packingModel"));
+
+    if (packing == "none")
+    {
+        what = "1 (no packing model)";
+        return 1;
+    }
+
+    const scalar alphaPacked =
+        models.subDict(packing + "Coeffs").subDict("particleStressModel")
+       .get<scalar>("alphaPacked");
+    what = "alphaPacked = " + Foam::name(alphaPacked);
+    return alphaPacked;
+}
+
+
+Foam::label Foam::regionFill::fill
+(
+    Cloud<basicSolidParcel>& cloud,
+    const scalar alphaMax,
+    const word& alphaMaxWhat
+)
+{
+    label nParcels = 0;
+    scalar W = 0;
+    count(alphaMax, alphaMaxWhat, nParcels, W);
+
+    // Draw: the same sequence on every processor (each parcel's point,
+    // then its velocity), whichever processor keeps the parcel
+    pointField xs(nParcels);
+    vectorField Us(sigmaU_ > 0 ? nParcels : 0);
+    for (label i = 0; i < nParcels; ++i)
+    {
+        xs[i] = draw(i);
+
+        // Drawn for every parcel, kept or not, so that every processor
+        // follows the same sequence
+        if (sigmaU_ > 0)
+        {
+            Us[i] = U0_ + sigmaU_*rnd_.GaussNormal<vector>();
+        }
+    }
+    const labelList cells(locate(xs));
+
+    // Place, in the order drawn: each parcel where it lies
+    label nHere = 0;
+    scalar realHere = 0;
+    forAll(xs, i)
+    {
+        const point& x = xs[i];
+        const label celli = cells[i];
+        if (celli < 0)
+        {
+            continue;       // Another processor's, or outside the mesh
+        }
+
+        basicSolidParcel* p = new basicSolidParcel(mesh_, x, celli);
+        p->typeId() = constProps_.parcelTypeId();
+        p->nParticle() = W*axisymmetric_.weightAt(x);
+        realHere += p->nParticle();
+        p->d() = d_;
+        p->dTarget() = d_;
+        p->rho() = constProps_.rho0();
+        p->U() = sigmaU_ > 0 ? Us[i] : U0_;
+        p->setMaterial(constProps_);
+        p->T() = T0_;
+        cloud.addParticle(p);
+        ++nHere;
+    }
+
+    const label nPlaced = returnReduce(nHere, sumOp<label>());
+    if (nPlaced != nParcels)
+    {
+        inputChecks::badValue
+        (
+            dict_, placedBy(),
+            name(nParcels - nPlaced) + " of " + name(nParcels)
+          + " positions outside the mesh",
+            "a region inside the mesh"
+        );
+    }
+
+    Info<< "    " << dict_.dictName() << ": " << nParcels << " parcels of "
+        << W << " particles";
+    if (axisymmetric_.weighted())
+    {
+        Info<< " on the axis (mean radial weight factor " << meanWeight_
+            << ")";
+    }
+    Info<< ", d = " << d_ << " m";
+    if (sigmaU_ > 0)
+    {
+        Info<< ", sigmaU = " << sigmaU_ << " m/s";
+    }
+    if (V_ > 0)
+    {
+        Info<< ", alpha0 = "
+            << returnReduce(realHere, sumOp<scalar>())*vParticle_/V_
+            << " over " << V_ << " m^3";
+    }
+    Info<< nl;
+
+    return nPlaced;
+}
+
+
+// ************************************************************************* //
