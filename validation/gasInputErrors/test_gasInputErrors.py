@@ -71,3 +71,32 @@ def test_no_phase(meshed):
     os.remove(os.path.join(case, "constant", "dsmcProperties"))
     out = run_failing(case, "rarefiedMultiphaseFoam")
     assert "Nothing to solve" in out and "dsmcProperties" in out
+
+
+# Unknown and misspelt keywords: the message names the file, the keyword,
+# the keyword meant and the valid ones.
+# (name, dictionary, entry, value, apps, texts beyond the file and keyword)
+GAS = "constant/dsmcProperties"
+BOTH = ["rarefiedMultiphaseInitialise", "rarefiedMultiphaseFoam"]
+KEYWORD_CASES = [
+    ("topMisspelt", GAS, "randomEntrytime", "true", BOTH,
+     ("did you mean 'randomEntryTime'", "maxRadialWeight")),
+    ("speciesUnknown", GAS, "moleculeProperties/N2/omgea", "0.74", BOTH,
+     ("did you mean 'omega'", "internalDegreesOfFreedom")),
+    ("collisionCoeffsUnknown", GAS,
+     "LarsenBorgnakkeVariableHardSphereCoeffs/relaxationNumber", "5", BOTH,
+     ("valid keywords", "relaxationCollisionNumber")),
+    ("initialiseMisspelt", "system/dsmcInitialiseDict", "temperatures", "300",
+     ["rarefiedMultiphaseInitialise"], ("did you mean 'temperature'",)),
+]
+
+
+@pytest.mark.parametrize("name, path, entry, value, apps, texts", KEYWORD_CASES,
+                         ids=[c[0] for c in KEYWORD_CASES])
+def test_unknown_keyword(meshed, name, path, entry, value, apps, texts):
+    case = with_entry(meshed, name, path, entry, value)
+    for app in apps:
+        out = run_failing(case, app)
+        for text in ("FOAM FATAL IO ERROR", path,
+                     "Unknown keyword '" + entry.split("/")[-1] + "'") + texts:
+            assert text in out, (app, text)

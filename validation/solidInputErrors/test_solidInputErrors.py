@@ -146,3 +146,50 @@ def test_region_outside_mesh(meshed):
     case = with_entry(meshed, "outside", INIT, REGION + "max", "(0.2 0.138 0.3)")
     out = run_failing(case, "rarefiedMultiphaseInitialise")
     expect(out, INIT, "positions outside the mesh")
+
+
+# Unknown and misspelt keywords (inputChecks::rejectUnknown where the
+# project defines every keyword, rejectMisspelt where upstream's readers
+# share the dictionary or users keep variables): the message names the
+# file, the keyword, the keyword meant and the valid ones.
+# (name, dictionary, entry, value, apps, texts beyond file and keyword)
+KEYWORD_CASES = [
+    ("topMisspelt", PROPS, "axisymetric", "false", BOTH,
+     ("did you mean 'axisymmetric'", "radialExtent")),
+    ("constPropsMisspelt", PROPS, "constantProperties/thermalAcommodation",
+     "0.5", BOTH, ("did you mean 'thermalAccommodation'", "specularFraction")),
+    ("selectorMisspelt", PROPS, "subModels/dampingModels", "none", BOTH,
+     ("did you mean 'dampingModel'", "isotropyModel")),
+    ("ntcUnknown", PROPS, "subModels/NTCHardSphereCoeffs/alphaSwich", "0.1",
+     BOTH, ("did you mean 'alphaSwitch'", "alphaValid", "randomSeed")),
+    ("regionUnknown", INIT, REGION + "sigmaV", "0.1",
+     ["rarefiedMultiphaseInitialise"], ("did you mean 'sigmaU'", "nParcels", "max")),
+    ("regionForeign", INIT, REGION + "radius", "0.1",
+     ["rarefiedMultiphaseInitialise"], ("valid keywords", "min", "max")),
+    ("initTopMisspelt", INIT, "randomseed", "3",
+     ["rarefiedMultiphaseInitialise"], ("did you mean 'randomSeed'", "regions")),
+]
+
+
+@pytest.mark.parametrize("name, path, entry, value, apps, texts", KEYWORD_CASES,
+                         ids=[c[0] for c in KEYWORD_CASES])
+def test_unknown_keyword(meshed, name, path, entry, value, apps, texts):
+    case = with_entry(meshed, name, path, entry, value)
+    if entry.startswith("subModels/NTCHardSphereCoeffs/"):
+        foam.set_entry(case, PROPS, "subModels/stochasticCollisionModel",
+                       "NTCHardSphere")
+    for app in apps:
+        out = run_failing(case, app)
+        expect(out, "Unknown keyword '" + entry.split("/")[-1] + "'", path, *texts)
+
+
+def test_user_variable_accepted(meshed):
+    """A top-level entry that is no misspelling (an OpenFOAM user's $variable)
+    is accepted: the initialiser and two solver steps run."""
+    case = with_entry(meshed, "userVariable", PROPS, "myLayerTop", "0.25")
+    foam.set_entry(case, INIT, "myOtherSetting", "1")
+    foam.set_entry(case, "system/controlDict", "endTime", "0.002")
+    foam.set_entry(case, "system/controlDict", "writeInterval", "0.002")
+    foam.run(case, "rarefiedMultiphaseInitialise")
+    foam.run(case, "rarefiedMultiphaseFoam")
+    assert "0.002" in foam.times(case)

@@ -35,6 +35,7 @@ Description
 #include "basicSolidCloud.H"
 #include "regionFill.H"
 #include "inputChecks.H"
+#include "keywordChecks.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -69,6 +70,7 @@ static bool initialiseSolids(const fvMesh& mesh, const word& cloudName)
     const scalar alphaMax = regionFill::alphaLimit(cloudProps, alphaMaxWhat);
 
     const IOdictionary initDict(header);
+    inputChecks::rejectMisspelt(initDict, {"randomSeed", "regions"});
     const label seed =
         inputChecks::getLabelOrDefault(initDict, "randomSeed", 0, 0, 2000);
     Random rnd(seed*1000003 + 700001);

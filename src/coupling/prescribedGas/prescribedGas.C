@@ -6,6 +6,7 @@
 
 #include "prescribedGas.H"
 #include "inputChecks.H"
+#include "keywordChecks.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -69,6 +70,10 @@ Foam::prescribedGas::prescribedGas(const dictionary& dict)
     muColumn_(false),
     table_()
 {
+    wordList valid({"rho", "U", "T", "mu", "gamma", "R", "Pr"});
+    valid.append(coordinateTable::keywords());
+    inputChecks::rejectUnknown(dict, valid);
+
     if (tabulated_)
     {
         readTable(dict);

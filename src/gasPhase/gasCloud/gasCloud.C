@@ -8,6 +8,7 @@
 #include "gasCellAverage.H"
 #include "cellFields.H"
 #include "inputChecks.H"
+#include "keywordChecks.H"
 #include "polyMeshTetDecomposition.H"
 #include "BinaryCollisionModel.H"
 #include "WallInteractionModel.H"
@@ -44,6 +45,10 @@ Foam::wordList Foam::gasCloudInputCheck::checkProperties
     for (const word& name : species)
     {
         const dictionary& props = molecules.subDict(name);
+        rejectUnknown
+        (
+            props, {"mass", "diameter", "internalDegreesOfFreedom", "omega"}
+        );
         getPositive(props, "mass");
         getPositive(props, "diameter");
         getClosed(props, "internalDegreesOfFreedom", 0, 10);
@@ -58,11 +63,14 @@ Foam::wordList Foam::gasCloudInputCheck::checkProperties
     );
     if (collision == "VariableHardSphere")
     {
-        getPositive(dict.subDict(collision + "Coeffs"), "Tref");
+        const dictionary& coeffs = dict.subDict(collision + "Coeffs");
+        rejectUnknown(coeffs, {"Tref"});
+        getPositive(coeffs, "Tref");
     }
     else if (collision == "LarsenBorgnakkeVariableHardSphere")
     {
         const dictionary& coeffs = dict.subDict(collision + "Coeffs");
+        rejectUnknown(coeffs, {"Tref", "relaxationCollisionNumber"});
         getPositive(coeffs, "Tref");
         getClosed(coeffs, "relaxationCollisionNumber", 1, GREAT);
     }
@@ -73,6 +81,10 @@ Foam::wordList Foam::gasCloudInputCheck::checkProperties
     );
     if (wall == "MixedDiffuseSpecular")
     {
+        rejectUnknown
+        (
+            dict.subDict("MixedDiffuseSpecularCoeffs"), {"diffuseFraction"}
+        );
         getClosed
         (
             dict.subDict("MixedDiffuseSpecularCoeffs"), "diffuseFraction", 0, 1
@@ -85,6 +97,7 @@ Foam::wordList Foam::gasCloudInputCheck::checkProperties
     );
     if (inflow == "FreeStream")
     {
+        rejectUnknown(dict.subDict("FreeStreamCoeffs"), {"numberDensities"});
         const dictionary& densities =
             dict.subDict("FreeStreamCoeffs").subDict("numberDensities");
         for (const word& name : densities.toc())
@@ -96,6 +109,21 @@ Foam::wordList Foam::gasCloudInputCheck::checkProperties
             getNonNegative(densities, name);
         }
     }
+
+    // The top level's plain entries: upstream's and ours (axisymmetricMode,
+    // randomSeed, randomEntryTime); the dictionaries there are upstream's,
+    // required where a selected model reads them
+    rejectMisspelt
+    (
+        dict,
+        {
+            "nEquivalentParticles", "typeIdList", "BinaryCollisionModel",
+            "WallInteractionModel", "InflowBoundaryModel", "randomSeed",
+            "randomEntryTime", "axisymmetric", "radialExtent",
+            "maxRadialWeight"
+        },
+        false
+    );
 
     return species;
 }
@@ -109,6 +137,10 @@ void Foam::gasCloudInputCheck::checkInitialise
 {
     using namespace inputChecks;
 
+    rejectMisspelt
+    (
+        dict, {"numberDensities", "temperature", "velocity", "randomSeed"}
+    );
     getLabelOrDefault(dict, "randomSeed", 0, 0, 2000);
     getPositive(dict, "temperature");
     dict.get<vector>("velocity");

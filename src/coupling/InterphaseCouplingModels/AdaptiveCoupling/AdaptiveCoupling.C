@@ -7,6 +7,7 @@
 #include "AdaptiveCoupling.H"
 #include "gasCloud.H"
 #include "inputChecks.H"
+#include "keywordChecks.H"
 #include "cellFields.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
@@ -25,6 +26,13 @@ Foam::AdaptiveCoupling<CloudType>::AdaptiveCoupling
     nLoth_(owner.mesh().nCells(), Zero)
 {
     const dictionary& coeffs = dict.optionalSubDict(typeName + "Coeffs");
+    if (dict.isDict(typeName + "Coeffs"))
+    {
+        inputChecks::rejectUnknown
+        (
+            coeffs, {"KnSwitch", "lift", "averagingSteps"}
+        );
+    }
     if (coeffs.found("KnSwitch"))
     {
         KnSwitch_ = inputChecks::getPositive(coeffs, "KnSwitch");

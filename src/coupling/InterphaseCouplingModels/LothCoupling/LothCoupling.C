@@ -8,6 +8,7 @@
 #include "gasCloud.H"
 #include "dragLaws.H"
 #include "inputChecks.H"
+#include "keywordChecks.H"
 #include "mathematicalConstants.H"
 #include "fvcCurl.H"
 #include "extrapolatedCalculatedFvPatchFields.H"
@@ -24,6 +25,10 @@ void Foam::LothCoupling<CloudType>::readCoeffs
     fromDsmc_ = true;
     if (!forceDsmc)
     {
+        inputChecks::rejectUnknown
+        (
+            dict, {"gas", "lift", "averagingSteps", "prescribed"}
+        );
         const word gas(dict.get<word>("gas"));
         const wordList valid({"dsmc", "prescribed"});
         if (!valid.found(gas))

@@ -7,6 +7,7 @@
 #include "TwoWayCoupling.H"
 #include "gasCloud.H"
 #include "inputChecks.H"
+#include "keywordChecks.H"
 #include "mathematicalConstants.H"
 #include "physicoChemicalConstants.H"
 
@@ -33,17 +34,7 @@ inline const dictionary& checkedCoeffs
     }
 
     const dictionary& coeffs = subModels.subDict(name);
-    for (const entry& e : coeffs)
-    {
-        if (!valid.found(e.keyword()))
-        {
-            FatalIOErrorInFunction(coeffs)
-                << "Unknown keyword '" << e.keyword() << "' in "
-                << coeffs.name()
-                << nl << "    valid keywords: " << valid
-                << exit(FatalIOError);
-        }
-    }
+    inputChecks::rejectUnknown(coeffs, valid);
     return coeffs;
 }
 

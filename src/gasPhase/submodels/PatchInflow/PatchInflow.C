@@ -6,6 +6,7 @@
 
 #include "PatchInflow.H"
 #include "inputChecks.H"
+#include "keywordChecks.H"
 #include "coordinateTable.H"
 #include "polyMeshTetDecomposition.H"
 #include "physicoChemicalConstants.H"
@@ -43,6 +44,10 @@ Foam::PatchInflow<CloudType>::readPatch
         notOneOf(this->coeffDict(), "patch", name, plain);
     }
     ip.inserted = 0;
+
+    wordList valid({"composition", "n", "T", "U"});
+    valid.append(coordinateTable::keywords());
+    rejectUnknown(dict, valid);
 
     // Composition
     const dictionary& comp = dict.subDict("composition");
@@ -284,7 +289,18 @@ Foam::PatchInflow<CloudType>::PatchInflow
     InflowBoundaryModel<CloudType>(dict, cloud, typeName),
     patches_()
 {
+    // Every entry of the coefficients is a patch's subdictionary
     const dictionary& coeffs = this->coeffDict();
+    wordList patchNames;
+    for (const entry& e : coeffs)
+    {
+        if (e.isDict())
+        {
+            patchNames.append(e.keyword());
+        }
+    }
+    inputChecks::rejectUnknown(coeffs, patchNames);
+
     for (const word& name : coeffs.toc())
     {
         if (coeffs.isDict(name))

@@ -41,7 +41,7 @@ Foam::regionFills::boxFill::boxFill
     const cloudSetup& setup
 )
 :
-    regionFill(dict, setup, true),
+    regionFill(dict, setup, {"min", "max"}, true),
     lo_(dict.get<point>("min")),
     hi_(dict.get<point>("max")),
     span_(hi_ - lo_),

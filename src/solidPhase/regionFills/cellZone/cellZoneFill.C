@@ -22,7 +22,7 @@ Foam::regionFills::cellZoneFill::cellZoneFill
     const cloudSetup& setup
 )
 :
-    regionFill(dict, setup),
+    regionFill(dict, setup, {"zone"}),
     inZone_(mesh_.nCells(), false)
 {
     if (Pstream::parRun())

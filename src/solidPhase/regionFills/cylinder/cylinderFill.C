@@ -25,7 +25,7 @@ Foam::regionFills::cylinderFill::cylinderFill
     const cloudSetup& setup
 )
 :
-    regionFill(dict, setup),
+    regionFill(dict, setup, {"p1", "p2", "radius"}),
     p1_(dict.get<point>("p1"))
 {
     const point p2(dict.get<point>("p2"));

@@ -23,7 +23,7 @@ Foam::regionFills::positionsFileFill::positionsFileFill
     const cloudSetup& setup
 )
 :
-    regionFill(dict, setup),
+    regionFill(dict, setup, {"file"}),
     positions_
     (
         vectorIOField

@@ -8,6 +8,7 @@
 #include "regionFill.H"
 #include "mortonLocate.H"
 #include "inputChecks.H"
+#include "keywordChecks.H"
 #include "mathematicalConstants.H"
 
 using Foam::constant::mathematical::pi;
@@ -27,10 +28,11 @@ Foam::regionFill::regionFill
 (
     const dictionary& dict,
     const cloudSetup& setup,
+    const wordList& keywords,
     const bool hasAxisymmetricForm
 )
 :
-    dict_(dict),
+    dict_(checked(dict, keywords)),
     mesh_(setup.mesh),
     constProps_(setup.constProps),
     axisymmetric_(setup.axisymmetric),
@@ -132,6 +134,23 @@ void Foam::regionFill::count
 Foam::labelList Foam::regionFill::locate(const pointField& xs) const
 {
     return mortonLocate(mesh_).cells(xs);
+}
+
+
+const Foam::dictionary& Foam::regionFill::checked
+(
+    const dictionary& dict,
+    const wordList& keywords
+)
+{
+    wordList valid
+    ({
+        "type", "d", "U0", "sigmaU", "T0", "alpha0", "nParticle", "nParcels"
+    });
+    valid.append(keywords);
+    inputChecks::rejectUnknown(dict, valid);
+
+    return dict;
 }
 
 

@@ -6,6 +6,7 @@
 
 #include "ZonalGravityForce.H"
 #include "inputChecks.H"
+#include "keywordChecks.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -21,6 +22,7 @@ Foam::ZonalGravityForce<CloudType>::ZonalGravityForce
     g_(owner.g().value()),
     zeroGravity_(mesh.nCells(), false)
 {
+    inputChecks::rejectUnknown(this->coeffs(), {"zeroGravityZone"});
     const word zoneName(this->coeffs().template get<word>("zeroGravityZone"));
     const label zonei = mesh.cellZones().findZoneID(zoneName);
 

@@ -176,6 +176,37 @@ const Foam::word& Foam::SolidCloud<CloudType>::checkInput
         checkRebound(models.subDict("standardWallInteractionCoeffs"));
     }
 
+    // Misspellings where upstream's readers and ours share a dictionary
+    // (upstream takes further keywords there: only near-misses stop)
+    rejectMisspelt
+    (
+        props,
+        {
+            "solution", "constantProperties", "subModels", "cloudFunctions",
+            "axisymmetric", "radialExtent", "maxRadialWeight", "cloudType"
+        }
+    );
+    rejectMisspelt
+    (
+        constProps,
+        {
+            "rho0", "T0", "Cp0", "specularFraction", "thermalAccommodation",
+            "parcelTypeId", "rhoMin", "minParcelMass", "youngsModulus",
+            "poissonsRatio", "alphaMax"
+        }
+    );
+    rejectMisspelt
+    (
+        models,
+        {
+            "particleForces", "injectionModels", "dispersionModel",
+            "patchInteractionModel", "stochasticCollisionModel",
+            "surfaceFilmModel", "packingModel", "dampingModel",
+            "isotropyModel", "interphaseCoupling"
+        },
+        false
+    );
+
     return cloudName;
 }
 

@@ -5,6 +5,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "NTCHardSphere.H"
+#include "keywordChecks.H"
 #include "inputChecks.H"
 #include "volFields.H"
 #include "cellFields.H"
@@ -46,6 +47,10 @@ void Foam::NTCHardSphere<CloudType>::checkCoeffs(const dictionary& subModels)
 
     const dictionary& coeffs = subModels.subDict(typeName + "Coeffs");
 
+    inputChecks::rejectUnknown
+    (
+        coeffs, {"e", "alphaValid", "alphaSwitch", "randomSeed"}
+    );
     inputChecks::getClosed(coeffs, "e", 0, 1);
     getFraction(coeffs, "alphaValid", 0.1);
     if (coeffs.found("alphaSwitch"))
