@@ -6,6 +6,7 @@
 
 #include "gasCloud.H"
 #include "inputChecks.H"
+#include "randomStreams.H"
 #include "polyMeshTetDecomposition.H"
 #include "BinaryCollisionModel.H"
 #include "WallInteractionModel.H"
@@ -191,7 +192,7 @@ void Foam::gasCloud::seedFromCase()
     label seed = 0;
     if (particleProperties().readIfPresent("randomSeed", seed))
     {
-        rndGen().reset(seed*1000003 + Pstream::myProcNo());
+        rndGen().reset(randomStreams::seed(seed, randomStreams::gas));
 
         Info<< "Gas random seed " << seed << " (+ processor number)" << endl;
     }
@@ -220,7 +221,7 @@ void Foam::gasCloud::fill(const dictionary& initialiseDict)
 {
     const label seed =
         initialiseDict.getOrDefault<label>("randomSeed", 0);
-    rndGen().reset(seed*1000003 + 500001 + Pstream::myProcNo());
+    rndGen().reset(randomStreams::seed(seed, randomStreams::gasFill));
 
     const scalar T = initialiseDict.get<scalar>("temperature");
     const vector U = initialiseDict.get<vector>("velocity");

@@ -7,6 +7,7 @@
 #include "TwoWayCoupling.H"
 #include "gasCloud.H"
 #include "inputChecks.H"
+#include "randomStreams.H"
 #include "mathematicalConstants.H"
 #include "physicoChemicalConstants.H"
 
@@ -391,15 +392,18 @@ Foam::TwoWayCoupling<CloudType>::TwoWayCoupling
     OneWayCoupling<CloudType>(dict, owner, type),
     rnd_
     (
-        inputChecks::getLabelOrDefault
+        randomStreams::seed
         (
-            TwoWayCouplingTools::checkedCoeffs
+            inputChecks::getLabelOrDefault
             (
-                dict, type, TwoWayCouplingTools::withCommon(valid)
+                TwoWayCouplingTools::checkedCoeffs
+                (
+                    dict, type, TwoWayCouplingTools::withCommon(valid)
+                ),
+                "randomSeed", 0, 0, 2000
             ),
-            "randomSeed", 0, 0, 2000
+            randomStreams::coupling
         )
-       *1000003 + 900001 + Pstream::myProcNo()
     ),
     sigmaCrMax_(owner.mesh().nCells(), Zero),
     remainder_(owner.mesh().nCells(), Zero),

@@ -6,6 +6,7 @@
 
 #include "SolidCloud.H"
 #include "inputChecks.H"
+#include "randomStreams.H"
 #include "cellFields.H"
 #include "PackingModel.H"
 #include "DampingModel.H"
@@ -209,7 +210,18 @@ Foam::SolidCloud<CloudType>::SolidCloud
 :
     CloudType(checkInput(cloudName, rho.mesh()), rho, U, mu, g, readFields),
     account_("Parcels", rho.mesh().boundaryMesh(), this->size()),
-    axisymmetric_(this->particleProperties(), rho.mesh(), cloudName)
+    axisymmetric_(this->particleProperties(), rho.mesh(), cloudName),
+    rnd_
+    (
+        randomStreams::seed
+        (
+            inputChecks::getLabelOrDefault
+            (
+                this->particleProperties(), "randomSeed", 0, 0, 2000
+            ),
+            randomStreams::grainWeighting
+        )
+    )
 {
     const dictionary& dict = this->particleProperties();
     const polyMesh& mesh = rho.mesh();
@@ -266,7 +278,7 @@ bool Foam::SolidCloud<CloudType>::weighMove
     // The parcel now carries the weight of where it is; RWF(r0)/RWF(r1)
     // copies of it on average keep the real grains of the one that moved
     p.nParticle() *= w1/w0;
-    const label nCopies = axisymmetricMode::copies(w0, w1, this->rndGen());
+    const label nCopies = axisymmetricMode::copies(w0, w1, rnd_);
 
     if (!nCopies)
     {

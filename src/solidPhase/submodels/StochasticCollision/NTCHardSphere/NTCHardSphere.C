@@ -6,6 +6,7 @@
 
 #include "NTCHardSphere.H"
 #include "inputChecks.H"
+#include "randomStreams.H"
 #include "volFields.H"
 #include "cellFields.H"
 #include "mathematicalConstants.H"
@@ -336,8 +337,11 @@ Foam::NTCHardSphere<CloudType>::NTCHardSphere
     ),
     rnd_
     (
-        this->coeffDict().template getOrDefault<label>("randomSeed", 0)
-       *1000003 + 300001 + Pstream::myProcNo()
+        randomStreams::seed
+        (
+            this->coeffDict().template getOrDefault<label>("randomSeed", 0),
+            randomStreams::grainCollisions
+        )
     ),
     sigmaCrMax_(owner.mesh().nCells(), Zero),
     remainder_(owner.mesh().nCells(), Zero),
