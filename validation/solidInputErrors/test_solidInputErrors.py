@@ -193,3 +193,12 @@ def test_user_variable_accepted(meshed):
     foam.run(case, "rarefiedMultiphaseInitialise")
     foam.run(case, "rarefiedMultiphaseFoam")
     assert "0.002" in foam.times(case)
+
+
+def test_cloud_random_seed_range(meshed):
+    """The cloud's own stream (radial-weight clone and delete draws) takes
+    randomSeed in [0, 2000] like every stream of the project
+    (randomStreams.H)."""
+    case = with_entry(meshed, "cloudSeed", PROPS, "randomSeed", "5000")
+    out = run_failing(case, "rarefiedMultiphaseFoam")
+    expect(out, PROPS, "randomSeed", "5000", "[0, 2000]")

@@ -36,6 +36,7 @@ Description
 #include "regionFill.H"
 #include "inputChecks.H"
 #include "keywordChecks.H"
+#include "randomStreams.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -73,7 +74,8 @@ static bool initialiseSolids(const fvMesh& mesh, const word& cloudName)
     inputChecks::rejectMisspelt(initDict, {"randomSeed", "regions"});
     const label seed =
         inputChecks::getLabelOrDefault(initDict, "randomSeed", 0, 0, 2000);
-    Random rnd(seed*1000003 + 700001);
+    // The same stream on every processor (no processor number)
+    Random rnd(randomStreams::seed(seed, randomStreams::grainFill, 0));
 
     Info<< "Initialising solid cloud " << cloudName << " (seed " << seed
         << ")" << nl;

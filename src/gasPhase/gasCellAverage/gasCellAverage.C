@@ -18,7 +18,6 @@ Foam::gasCellAverage::gasCellAverage
 :
     mesh_(gas.mesh()),
     window_(window),
-    nSamples_(0),
     count_(gas.constProps().size()),
     mass_(mesh_.nCells(), Zero),
     momentum_(mesh_.nCells(), Zero),
@@ -54,16 +53,9 @@ Foam::gasCellAverage::gasCellAverage
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-Foam::scalar Foam::gasCellAverage::nextWeight()
-{
-    ++nSamples_;
-    return 1.0/scalar(window_ > 0 ? min(nSamples_, window_) : nSamples_);
-}
-
-
 void Foam::gasCellAverage::sample(const gasCloud& gas)
 {
-    const scalar w = nextWeight();
+    const scalar w = window_.next();
     const scalar keep = 1 - w;
 
     const auto& occupancy = gas.cellOccupancy();
@@ -100,7 +92,7 @@ void Foam::gasCellAverage::sample(const gasCloud& gas)
 
 void Foam::gasCellAverage::add(const gasCellAverage& step)
 {
-    const scalar w = nextWeight();
+    const scalar w = window_.next();
     const scalar keep = 1 - w;
 
     forAll(count_, typei)
@@ -115,7 +107,7 @@ void Foam::gasCellAverage::add(const gasCellAverage& step)
 
 void Foam::gasCellAverage::reset()
 {
-    nSamples_ = 0;
+    window_.reset();
     for (auto& c : count_)
     {
         c = Zero;

@@ -9,6 +9,7 @@
 #include "cellFields.H"
 #include "inputChecks.H"
 #include "keywordChecks.H"
+#include "randomStreams.H"
 #include "polyMeshTetDecomposition.H"
 #include "BinaryCollisionModel.H"
 #include "WallInteractionModel.H"
@@ -225,7 +226,7 @@ void Foam::gasCloud::seedFromCase()
     label seed = 0;
     if (particleProperties().readIfPresent("randomSeed", seed))
     {
-        rndGen().reset(seed*1000003 + Pstream::myProcNo());
+        rndGen().reset(randomStreams::seed(seed, randomStreams::gas));
 
         Info<< "Gas random seed " << seed << " (+ processor number)" << endl;
     }
@@ -254,7 +255,7 @@ void Foam::gasCloud::fill(const dictionary& initialiseDict)
 {
     const label seed =
         initialiseDict.getOrDefault<label>("randomSeed", 0);
-    rndGen().reset(seed*1000003 + 500001 + Pstream::myProcNo());
+    rndGen().reset(randomStreams::seed(seed, randomStreams::gasFill));
 
     const scalar T = initialiseDict.get<scalar>("temperature");
     const vector U = initialiseDict.get<vector>("velocity");
@@ -496,32 +497,25 @@ bool Foam::gasCloud::weighMove
         w0, axisymmetric_.weightAt(p.position()), rndGen()
     );
 
-    if (!nCopies)
-    {
-        ++account_.deletedStep();
-        return false;
-    }
-    if (nCopies > 1)
-    {
-        const label nClones = nCopies - 1;
-
-        // Appended to the cloud being moved: the move loop reaches a
-        // clone (or not, if appended while the last member moves) with
-        // the step already done, so its move does nothing, and it is in
-        // the cell for this step's collisions.  (A clone made at a
-        // processor boundary is moved on from there like its parent.)
-        for (label i = 0; i < nClones; ++i)
+    // Clones appended to the cloud being moved: the move loop reaches a
+    // clone (or not, if appended while the last member moves) with the
+    // step already done, so its move does nothing, and it is in the cell
+    // for this step's collisions.  (A clone made at a processor boundary
+    // is moved on from there like its parent.)
+    const bool kept = axisymmetricMode::keepCopies
+    (
+        *this, p, nCopies, account_,
+        [&](const gasParcel& clone)
         {
-            gasParcel* clone = new gasParcel(p);
-            clone->origId() = clone->getNewParticleID();
-            this->addParticle(clone);
-
             if (complete)
             {
-                arrive(clone->cell());
+                arrive(clone.cell());
             }
         }
-        account_.clonedStep() += nClones;
+    );
+    if (!kept)
+    {
+        return false;
     }
 
     if (complete)

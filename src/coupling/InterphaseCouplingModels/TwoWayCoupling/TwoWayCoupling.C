@@ -8,6 +8,8 @@
 #include "gasCloud.H"
 #include "inputChecks.H"
 #include "keywordChecks.H"
+#include "randomStreams.H"
+#include "ntcSelection.H"
 #include "mathematicalConstants.H"
 #include "physicoChemicalConstants.H"
 
@@ -222,11 +224,11 @@ Foam::label Foam::TwoWayCoupling<CloudType>::collideCell
         sigmaCrMax = sigmaCrBound(inCell, partners);
     }
 
-    const scalar candidates =
-        scalar(Ng)*Ns*sigmaCrMax*dt/this->owner().mesh().V()[celli]
-      + remainder_[celli];
-    const label nCandidates = label(candidates);
-    remainder_[celli] = candidates - nCandidates;
+    const label nCandidates = ntcSelection::candidates
+    (
+        scalar(Ng)*Ns*sigmaCrMax*dt/this->owner().mesh().V()[celli],
+        remainder_[celli]
+    );
     counts_.candidates += nCandidates;
 
     label nAccepted = 0;
@@ -236,12 +238,7 @@ Foam::label Foam::TwoWayCoupling<CloudType>::collideCell
         const partner& s = partners[rnd_.position<label>(0, Ns - 1)];
 
         const scalar WSigmaCr = s.W*s.sigma*mag(g.U() - s.U);
-        if (WSigmaCr > sigmaCrMax)
-        {
-            sigmaCrMax = WSigmaCr;
-        }
-
-        if (WSigmaCr > sigmaCrMax*rnd_.sample01<scalar>())
+        if (ntcSelection::accept(WSigmaCr, sigmaCrMax, rnd_))
         {
             const vector c0(g.U());
             const scalar Ei0 = g.Ei();
@@ -382,15 +379,18 @@ Foam::TwoWayCoupling<CloudType>::TwoWayCoupling
     OneWayCoupling<CloudType>(dict, owner, type),
     rnd_
     (
-        inputChecks::getLabelOrDefault
+        randomStreams::seed
         (
-            TwoWayCouplingTools::checkedCoeffs
+            inputChecks::getLabelOrDefault
             (
-                dict, type, TwoWayCouplingTools::withCommon(valid)
+                TwoWayCouplingTools::checkedCoeffs
+                (
+                    dict, type, TwoWayCouplingTools::withCommon(valid)
+                ),
+                "randomSeed", 0, 0, 2000
             ),
-            "randomSeed", 0, 0, 2000
+            randomStreams::coupling
         )
-       *1000003 + 900001 + Pstream::myProcNo()
     ),
     sigmaCrMax_(owner.mesh().nCells(), Zero),
     remainder_(owner.mesh().nCells(), Zero),

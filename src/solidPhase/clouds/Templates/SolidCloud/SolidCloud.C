@@ -6,6 +6,7 @@
 
 #include "SolidCloud.H"
 #include "inputChecks.H"
+#include "randomStreams.H"
 #include "cellFields.H"
 #include "PackingModel.H"
 #include "DampingModel.H"
@@ -183,7 +184,8 @@ const Foam::word& Foam::SolidCloud<CloudType>::checkInput
         props,
         {
             "solution", "constantProperties", "subModels", "cloudFunctions",
-            "axisymmetric", "radialExtent", "maxRadialWeight", "cloudType"
+            "axisymmetric", "radialExtent", "maxRadialWeight", "cloudType",
+            "randomSeed"
         }
     );
     rejectMisspelt
@@ -240,7 +242,18 @@ Foam::SolidCloud<CloudType>::SolidCloud
 :
     CloudType(checkInput(cloudName, rho.mesh()), rho, U, mu, g, readFields),
     account_("Parcels", rho.mesh().boundaryMesh(), this->size()),
-    axisymmetric_(this->particleProperties(), rho.mesh(), cloudName)
+    axisymmetric_(this->particleProperties(), rho.mesh(), cloudName),
+    rnd_
+    (
+        randomStreams::seed
+        (
+            inputChecks::getLabelOrDefault
+            (
+                this->particleProperties(), "randomSeed", 0, 0, 2000
+            ),
+            randomStreams::grainWeighting
+        )
+    )
 {
     const dictionary& dict = this->particleProperties();
     const polyMesh& mesh = rho.mesh();
@@ -297,27 +310,13 @@ bool Foam::SolidCloud<CloudType>::weighMove
     // The parcel now carries the weight of where it is; RWF(r0)/RWF(r1)
     // copies of it on average keep the real grains of the one that moved
     p.nParticle() *= w1/w0;
-    const label nCopies = axisymmetricMode::copies(w0, w1, this->rndGen());
-
-    if (!nCopies)
-    {
-        ++account_.deletedStep();
-        return false;
-    }
-
-    const label nClones = nCopies - 1;
-
-    // Appended to the cloud being moved with the step done, so the move
-    // loop leaves them where they are
-    for (label i = 0; i < nClones; ++i)
-    {
-        parcelType* clone = new parcelType(p);
-        clone->origId() = clone->getNewParticleID();
-        this->addParticle(clone);
-    }
-    account_.clonedStep() += nClones;
-
-    return true;
+    // Clones are appended to the cloud being moved with the step done, so
+    // the move loop leaves them where they are
+    return axisymmetricMode::keepCopies
+    (
+        *this, p, axisymmetricMode::copies(w0, w1, rnd_), account_,
+        [](const parcelType&) {}
+    );
 }
 
 

@@ -7,6 +7,9 @@
 #include "NTCHardSphere.H"
 #include "keywordChecks.H"
 #include "inputChecks.H"
+#include "randomStreams.H"
+#include "ntcSelection.H"
+#include "parcelsByCell.H"
 #include "volFields.H"
 #include "cellFields.H"
 #include "mathematicalConstants.H"
@@ -123,12 +126,11 @@ Foam::label Foam::NTCHardSphere<CloudType>::collideCell
         WMax = max(WMax, p->nParticle());
     }
 
-    const scalar candidates =
-        WMax*N*(N - 1)*sigmaCrMax*dt/(2*this->owner().mesh().V()[celli])
-      + remainder_[celli];
-
-    const label nPairs = label(candidates);
-    remainder_[celli] = candidates - nPairs;
+    const label nPairs = ntcSelection::candidates
+    (
+        WMax*N*(N - 1)*sigmaCrMax*dt/(2*this->owner().mesh().V()[celli]),
+        remainder_[celli]
+    );
 
     for (label pairi = 0; pairi < nPairs; ++pairi)
     {
@@ -145,12 +147,7 @@ Foam::label Foam::NTCHardSphere<CloudType>::collideCell
         const scalar cr = mag(p.U() - q.U());
         const scalar sigmaCr = pi*sqr(0.5*(p.d() + q.d()))*cr;
 
-        if (sigmaCr > sigmaCrMax)
-        {
-            sigmaCrMax = sigmaCr;
-        }
-
-        if (sigmaCr <= rnd_.sample01<scalar>()*sigmaCrMax)
+        if (!ntcSelection::accept(sigmaCr, sigmaCrMax, rnd_))
         {
             continue;
         }
@@ -259,12 +256,17 @@ void Foam::NTCHardSphere<CloudType>::collide
     }
 
     // The parcels of each cell and the cell's solid volume fraction
-    List<DynamicList<parcelType*>> cellParcels(nCells);
+    const List<DynamicList<parcelType*>> cellParcels
+    (
+        parcelsByCell(this->owner())
+    );
     scalarField alpha(nCells, Zero);
-    for (parcelType& p : this->owner())
+    forAll(cellParcels, celli)
     {
-        cellParcels[p.cell()].append(&p);
-        alpha[p.cell()] += p.nParticle()*p.volume();
+        for (const parcelType* p : cellParcels[celli])
+        {
+            alpha[celli] += p->nParticle()*p->volume();
+        }
     }
     alpha /= V;
 
@@ -341,8 +343,11 @@ Foam::NTCHardSphere<CloudType>::NTCHardSphere
     ),
     rnd_
     (
-        this->coeffDict().template getOrDefault<label>("randomSeed", 0)
-       *1000003 + 300001 + Pstream::myProcNo()
+        randomStreams::seed
+        (
+            this->coeffDict().template getOrDefault<label>("randomSeed", 0),
+            randomStreams::grainCollisions
+        )
     ),
     sigmaCrMax_(owner.mesh().nCells(), Zero),
     remainder_(owner.mesh().nCells(), Zero),
