@@ -3,8 +3,9 @@
 """averagingMethod cachedDual (src/solidPhase/submodels/AveragingMethods)
 gives upstream's dual averaging to the bit.
 
-A reduced copy of the Snider sedimentation set-up (20 000 parcels, MPPIC
-with explicit packing, relaxation damping and stochastic isotropy, which
+A reduced copy of the Snider sedimentation set-up (20 000 parcels, MPPIC as
+the tutorial has it: twoSided packing, relaxation damping and stochastic
+isotropy, which
 find the cloud's averages by name) runs 40 steps from one initial state
 with averagingMethod dual and with cachedDual, serially and on 2 METIS
 ranks.  Expected: every file of the last time directory (the parcels'

@@ -1,7 +1,9 @@
 # rarefiedMultiphaseFoam. Copyright (C) 2026 The rarefiedMultiphaseFoam authors
 # SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
 """Snider sedimentation: reduced in ./Alltest, full-size with
-./Alltest --long.  Checks and tolerances: rmf.snider; runs: validate.py."""
+./Alltest --long; the over-packing bounds at the tutorial's parcel
+weight in a narrow column always.  Checks and tolerances: rmf.snider;
+runs: validate.py."""
 
 import os
 import sys
@@ -33,8 +35,33 @@ def test_snider_checks(results):
 
 
 def test_overpacking_bounds(results):
+    """Full size (--long): the layer and averaged cell bounds of
+    doc/physics.md 5.3; the reduced runs' heavier parcels are checked
+    by neither (rmf.snider)."""
     failed = [name for name, ok in results["checks"].items()
               if not ok and name.endswith(snider.OVERPACKING)]
+    assert not failed, failed
+
+
+@pytest.fixture(scope="module")
+def narrow_results():
+    return validate.narrow()
+
+
+def test_narrow_averaged_cell_bound(narrow_results):
+    """The averaged alpha the twoSided packing model acts on stays at or
+    below alphaPacked + 0.08 in every cell from 0.1 s to 0.6 s, at the
+    tutorial's parcel weight (doc/physics.md 5.3)."""
+    _, s = narrow_results
+    assert s["checks"]["averaged cell bound"], s["alphaMaxAveraged"]
+
+
+def test_narrow_bed(narrow_results):
+    """Bed 0.6 +- 0.02 below 0.14 m, clear above 0.16 m, a sharp
+    interface, parcels conserved, at the tutorial's parcel weight."""
+    _, s = narrow_results
+    failed = [name for name in ("parcels", "properties", "bed", "clear", "sharp")
+              if not s["checks"][name]]
     assert not failed, failed
 
 
@@ -56,7 +83,8 @@ def test_stochastic_overpacks(variant_results):
     passed, s = variant_results[0]["stochastic"]
     checks = s["checks"]
     assert checks["parcels"] and checks["properties"] and checks["heated"]
-    assert not checks["layer bound"], max(s["alphaMaxLayer"].values())
+    layer = max(s["alphaMaxLayer"].values())
+    assert layer > snider.LAYER_MAX_BOUND, layer
 
 
 def test_hybrid_checks(variant_results):

@@ -14,13 +14,19 @@ stated there) and draws sniderSedimentation.png: alpha(z) at 0.1, 0.15,
 0.2 and 0.6 s for the serial and the parallel run, and e = 0.85 against
 e = 0.5 at 0.2 s.
 
-With --variants it also runs, side by side to 0.6 s, the grain
-collision variants of VARIANTS (stochastic NTC collisions instead of MPPIC;
-the NTC/MPPIC hybrid) and draws sniderVariants.png: their alpha(z) at
-0.6 s beside the MPPIC serial run's, with each run's largest alpha.
+With --variants it also runs, side by side to 0.6 s, the variants of
+VARIANTS (v1912's explicit and implicit packing instead of ours; ours
+with e = 0.5; stochastic NTC collisions instead of MPPIC; the NTC/MPPIC
+hybrid; reduced: the last two only, REDUCED_VARIANTS), prints each run's
+largest layer, raw cell and averaged cell alpha and its wall time, and
+draws sniderVariants.png: alpha(z) at 0.1, 0.15, 0.2 and 0.6 s of each.
 
 Reduced (default, in ./Alltest): 4 times fewer parcels of 4 times the
 weight (same alpha0); --full: the tutorial as it is (162 232 parcels).
+
+narrow(): the over-packing bounds at the tutorial's parcel weight in
+./Alltest: a column of 5 x 5 of the tutorial's cells (0.046 m square)
+holding a ninth of its parcels (18 026 x 749), to 0.6 s, serial.
 The two single-rank runs go side by side on the machine's 2 cores, then
 the parallel one.
 """
@@ -41,9 +47,15 @@ PROPS = "constant/grainsProperties"
 FULL_PARCELS, FULL_WEIGHT = 162232, 749
 REDUCTION = 4
 
-# Grain-grain collision variants of the tutorial (doc/physics.md 7.1, 5.2, 5.5):
+# Variants of the tutorial (doc/physics.md 7.1, 5.2, 5.3, 5.5):
 # grainsProperties entries each sets
 VARIANTS = {
+    # v1912's packing models instead of ours (their coefficients are in
+    # the tutorial's dictionary: implicit with eps = 1e-2, as 5.3 explains)
+    "explicit": {"subModels/packingModel": "explicit"},
+    "implicit": {"subModels/packingModel": "implicit"},
+    # ours with restitution 0.5 (walls, time scales, limiter)
+    "twoSidedE05": {},
     # NTC hard-sphere collisions alone: no packing, no isotropy
     "stochastic": {"subModels/packingModel": "none",
                    "subModels/isotropyModel": "none",
@@ -53,6 +65,7 @@ VARIANTS = {
     "hybrid": {"subModels/stochasticCollisionModel": "NTCHardSphere",
                "subModels/NTCHardSphereCoeffs/alphaSwitch": 0.1},
 }
+REDUCED_VARIANTS = ("stochastic", "hybrid")
 # The reduced runs' parcels are 4 times heavier: one alone makes
 # alpha = 0.067 in a cell, so below 0.1 no cell holds a pair; 0.2 admits
 # up to 2 (the full-size 0.1 admits 5)
@@ -93,10 +106,37 @@ def solve(case, np_=1):
     return time.time() - start
 
 
+NARROW_CELLS = 5                    # of the tutorial's 15 per side
+
+
+def narrow(build=BUILD):
+    """The tutorial at its parcel weight in a narrow column (module
+    docstring); returns (all passed, summary) of rmf.snider.check with
+    the averaged cell bound (a layer holds too few parcels for the layer
+    bound: rmf.snider)."""
+    side = 0.138*NARROW_CELLS/15
+    case = foam.copy_setup(TUTORIAL, os.path.join(build, "narrow"))
+    mesh = os.path.join(case, "system", "blockMeshDict")
+    with open(mesh) as f:
+        text = f.read()
+    text = text.replace("0.138", f"{side:.6g}").replace(
+        "(15 15 40)", f"({NARROW_CELLS} {NARROW_CELLS} 40)")
+    with open(mesh, "w") as f:
+        f.write(text)
+    foam.set_entry(case, INIT, "regions/column/max", f"({side:.6g} {side:.6g} 0.3)")
+    foam.set_entry(case, INIT, "regions/column/nParcels",
+                   round(FULL_PARCELS*(NARROW_CELLS/15)**2))
+    foam.run(case, "blockMesh")
+    foam.run(case, "rarefiedMultiphaseInitialise")
+    seconds = solve(case)
+    print(f"-- narrow: {case} ({seconds:.0f} s)")
+    return snider.check(case, "0.6", cell_bound=True, layer_bound=False)
+
+
 def variants(mppic, full=False, build=BUILD):
     """The VARIANTS run to 0.6 s beside each other; mppic: summary of the
     tutorial's serial run at the same size.  Returns {name: (passed,
-    summary)} with the MPPIC run under "MPPIC", and the plot's path."""
+    summary)} with the tutorial's run under "twoSided", and the plot's path."""
     scale = 1 if full else REDUCTION
     build = os.path.join(build, "full" if full else "reduced")
 
@@ -104,23 +144,31 @@ def variants(mppic, full=False, build=BUILD):
         entries = dict(VARIANTS[name])
         if not full and "subModels/NTCHardSphereCoeffs/alphaSwitch" in entries:
             entries["subModels/NTCHardSphereCoeffs/alphaSwitch"] = REDUCED_ALPHA_SWITCH
-        case = prepare(build, name, scale, 0.6, entries=entries)
+        case = prepare(build, name, scale, 0.6, e=0.5 if name == "twoSidedE05" else None,
+                       entries=entries)
         seconds = solve(case)
         print(f"-- {name}: {case} ({seconds:.0f} s)")
-        return snider.check(case, "0.6", cell_bound=full, heated=True)
+        passed, s = snider.check(case, "0.6", cell_bound=full, heated=True)
+        s["seconds"] = seconds
+        return passed, s
 
+    names = list(VARIANTS) if full else list(REDUCED_VARIANTS)
     with concurrent.futures.ThreadPoolExecutor(2) as pool:
-        results = dict(zip(VARIANTS, pool.map(run, VARIANTS)))
-    runs = {"MPPIC": mppic, **{name: s for name, (_, s) in results.items()}}
-    print("-- largest alpha, layer / cell, over all written times")
+        results = dict(zip(names, pool.map(run, names)))
+    runs = {"twoSided": mppic, **{name: s for name, (_, s) in results.items()}}
+    print("-- largest alpha from 0.1 s: layer / raw cell / averaged cell;"
+          " bed below 0.14 m at 0.6 s; solver wall time")
     for name, s in runs.items():
+        averaged = s.get("alphaMaxAveragedAll")
         print(f"{name:12s} {max(s['alphaMaxLayer'].values()):.3f}"
-              f" / {max(s['alphaMaxCell'].values()):.3f}")
+              f" / {s['alphaMaxCellAll']:.3f}"
+              f" / {averaged if averaged is None else round(averaged, 3)}"
+              f"; {s.get('bedMean', float('nan')):.3f}"
+              f"; {s.get('seconds', float('nan')):.0f} s")
     png = os.path.join(build, "sniderVariants.png")
-    snider.plot_at({f"{name}, max layer alpha {max(s['alphaMaxLayer'].values()):.2f}": s
-                    for name, s in runs.items()}, "0.6", png,
-                   title="grain-grain collisions: alpha(z) at 0.6 s")
-    return {"MPPIC": (True, mppic), **results}, png
+    snider.plot(runs, png, title="Snider sedimentation: packing and collision"
+                " models (alpha(z) at 0.1, 0.15, 0.2, 0.6 s)")
+    return {"twoSided": (True, mppic), **results}, png
 
 
 def validate(full=False, build=BUILD, parallel_case=None):
@@ -153,10 +201,12 @@ def validate(full=False, build=BUILD, parallel_case=None):
 
     checks = {}
     runs = {}
+    seconds = {"serial": t_serial, "parallel": t_parallel, "e05": t_e05}
     for name, case, end in (("serial", serial, "0.6"), ("parallel", parallel, "0.6"),
                             ("e05", e05, None)):
         print(f"-- {name}: {case}")
         _, runs[name] = snider.check(case, end, cell_bound=full)
+        runs[name]["seconds"] = seconds[name]
         checks.update({f"{name}: {k}": v for k, v in runs[name]["checks"].items()})
     s, p, e = runs["serial"], runs["parallel"], runs["e05"]
     print("-- serial against parallel, e = 0.5 against e = 0.85")

@@ -60,9 +60,9 @@ def expect(out, *texts):
 # Cloud dictionary: both programs check it before anything is read.
 # (entry, bad value, texts of the message beyond file, keyword and value)
 CLOUD_CASES = [
-    ("alphaPacked", "subModels/explicitCoeffs/particleStressModel/alphaPacked",
+    ("alphaPacked", "subModels/twoSidedCoeffs/particleStressModel/alphaPacked",
      "1", "(0, 1)"),
-    ("pSolid", "subModels/explicitCoeffs/particleStressModel/pSolid", "0", "(0, inf)"),
+    ("pSolid", "subModels/twoSidedCoeffs/particleStressModel/pSolid", "0", "(0, inf)"),
     ("wallRestitution", "subModels/localInteractionCoeffs/patches/sides/e", "1.2",
      "[0, 1]"),
     ("collisionRestitution", "subModels/stochasticCoeffs/timeScaleModel/e", "-0.1",
@@ -76,9 +76,12 @@ CLOUD_CASES = [
     ("thermalAccommodationHigh", "constantProperties/thermalAccommodation", "1.01",
      "[0, 1]"),
     ("packingModel", "subModels/packingModel", "explicitX", "implicit"),
-    ("stressModel", "subModels/explicitCoeffs/particleStressModel/type", "Harris",
+    ("stressModel", "subModels/twoSidedCoeffs/particleStressModel/type", "Harris",
      "HarrisCrighton"),
     ("averaging", "solution/averagingMethod", "triple", "dual"),
+    ("packingRestitution", "subModels/twoSidedCoeffs/e", "1.5", "[0, 1]"),
+    ("packingRelief", "subModels/twoSidedCoeffs/relief", "2", "[0, 1]"),
+    ("packingAlphaMin", "subModels/twoSidedCoeffs/alphaMin", "0", "(0, 1)"),
 ]
 
 
@@ -162,6 +165,8 @@ KEYWORD_CASES = [
      ("did you mean 'dampingModel'", "isotropyModel")),
     ("ntcUnknown", PROPS, "subModels/NTCHardSphereCoeffs/alphaSwich", "0.1",
      BOTH, ("did you mean 'alphaSwitch'", "alphaValid", "randomSeed")),
+    ("packingUnknown", PROPS, "subModels/twoSidedCoeffs/releif", "0.25", BOTH,
+     ("did you mean 'relief'", "alphaMin", "particleStressModel")),
     ("regionUnknown", INIT, REGION + "sigmaV", "0.1",
      ["rarefiedMultiphaseInitialise"], ("did you mean 'sigmaU'", "nParcels", "max")),
     ("regionForeign", INIT, REGION + "radius", "0.1",

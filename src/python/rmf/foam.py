@@ -183,14 +183,23 @@ def copy_setup(src, dst):
     return dst
 
 
-def cell_centres(case, time="0"):
-    """Cell centres (n, 3) of a case, written by postProcess -func
-    writeCellCentres when missing."""
-    path = os.path.join(case, time, "C")
+def _mesh_field(case, time, name, func):
+    """A field postProcess -func writes (name), written when missing."""
+    path = os.path.join(case, time, name)
     if not os.path.exists(path):
-        subprocess.run(["postProcess", "-func", "writeCellCentres", "-time", time],
+        subprocess.run(["postProcess", "-func", func, "-time", time],
                        cwd=case, check=True, stdout=subprocess.DEVNULL)
     return read_field(path)
+
+
+def cell_centres(case, time="0"):
+    """Cell centres (n, 3) of a case (postProcess -func writeCellCentres)."""
+    return _mesh_field(case, time, "C", "writeCellCentres")
+
+
+def cell_volumes(case, time="0"):
+    """Cell volumes (n,) of a case (postProcess -func writeCellVolumes)."""
+    return _mesh_field(case, time, "V", "writeCellVolumes")
 
 
 def read_list(path):

@@ -14,6 +14,7 @@
 #include "PatchInteractionModel.H"
 #include "StochasticCollisionModel.H"
 #include "NTCHardSphere.H"
+#include "TwoSided.H"
 #include "ParticleStressModel.H"
 #include "TimeScaleModel.H"
 #include "AveragingMethod.H"
@@ -117,6 +118,10 @@ const Foam::word& Foam::SolidCloud<CloudType>::checkInput
     if (packing != "none")
     {
         checkParticleStress(models.subDict(packing + "Coeffs"));
+    }
+    if (packing == PackingModels::TwoSided<mppicType>::typeName)
+    {
+        PackingModels::TwoSided<mppicType>::checkCoeffs(models);
     }
 
     const word damping

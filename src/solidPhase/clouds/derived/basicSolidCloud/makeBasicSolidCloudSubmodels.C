@@ -5,8 +5,8 @@
 
 Description
     Registers, for basicSolidCloud, upstream's kinematic and MPPIC submodels (as
-    MPPICFoam's cloud has them) and our own: the zonalGravity force and the
-    NTCHardSphere stochastic collision model.
+    MPPICFoam's cloud has them) and our own: the zonalGravity force, the
+    NTCHardSphere stochastic collision model and the twoSided packing model.
 
 \*---------------------------------------------------------------------------*/
 
@@ -30,6 +30,7 @@ Description
 // Ours
 #include "ZonalGravityForce.H"
 #include "NTCHardSphere.H"
+#include "TwoSided.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -48,6 +49,7 @@ makeMPPICParcelPackingModels(basicSolidCloud);
 
 makeParticleForceModelType(ZonalGravityForce, basicSolidCloud);
 makeStochasticCollisionModelType(NTCHardSphere, basicSolidCloud);
+makePackingModelType(TwoSided, basicSolidCloud);
 
 
 // ************************************************************************* //

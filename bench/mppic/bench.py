@@ -1,0 +1,403 @@
+#!/usr/bin/python3
+# rarefiedMultiphaseFoam. Copyright (C) 2026 The rarefiedMultiphaseFoam authors
+# SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
+"""Cost of an MPPIC parcel-step of rarefiedMultiphaseFoam against stock MPPICFoam.
+
+Case: tutorials/solids/sniderSedimentation (Snider's case 7: a closed box
+0.138 x 0.138 x 0.3 m, 15 x 15 x 40 cells, walls on all sides; 162 232
+parcels of 749 glass beads, d = 0.3 mm, rho = 2500 kg/m^3, at rest,
+uniform at alpha = 0.3; g = (0 0 -9.8) m/s^2; dt = 1 ms), meshed
+(blockMesh) and initialised (rarefiedMultiphaseInitialise) once.
+
+Both clouds get the same MPPIC submodels, set here with foamDictionary in
+both dictionaries from one list (MPPIC_ENTRIES), whatever the tutorial's
+own choice: packing explicit (HarrisCrighton: alphaPacked 0.6, pSolid 10,
+beta 2, eps 1e-7; correctionLimitingMethod absolute, e 0.85), damping
+none, isotropy stochastic (timeScaleModel isotropic, alphaPacked 0.6,
+e 0.85), no stochastic collisions, no dispersion, walls rebound e 0.85
+(localInteraction), gravity as a particle force.  Averaging: ours with
+cachedDual (the project's cached copy of upstream's dual, same results)
+and, as a third column, with dual; MPPICFoam with dual.
+
+Ours runs the grains alone in vacuum (no gas, no carrier solve).  The
+stock solver needs a carrier phase, made practically absent: air at rest
+(U.air = 0, p = 0; walls noSlip / fixedFluxPressure), rho.air =
+2.5e-3 kg/m^3 (1e-6 of the grains'), nu = 1e-5 m^2/s (mu = 2.5e-8 Pa s),
+laminar, two-way coupled (semiImplicit momentum source) as in MPPICFoam's
+column tutorial, whose fvSchemes/fvSolution (PIMPLE, 1 outer, 2 pressure
+correctors, GAMG) are used.  Grain forces: gravity (buoyancy factor
+1 - 1e-6) and ErgunWenYuDrag, MPPICFoam's usual drag.  At that density the
+drag is negligible: its response time rho_p alpha_c d^2/((150 alpha_d/
+alpha_c + 1.75 Re) mu) is about 100 s at alpha = 0.3 and 16 s at
+alpha = 0.6, against a run of a few 0.01 s, so it changes the grains'
+velocity by well under 1 % of the slip.  The carrier's fields are
+interpolated to the parcels with `cell` (upstream's MPPICFoam tutorials
+use the dearer cellPoint for U.air): the stock cloud does no more than it
+must.  MPPICFoam still solves the carrier's momentum and pressure each
+step (with the cloud's momentum source): that is part of its cost by
+design.
+
+Same parcels: MPPICFoam injects, with manualInjection at SOI 0
+(parcelBasisType fixed, nParticle 749, d fixedValue 0.3 mm, U0 = 0), the
+positions our initialiser wrote (0/lagrangian/grains/positions, legacy
+"(x y z) cell" lines, copied to constant/kinematicCloudPositions with 17
+significant digits): same points, same count.  Remaining differences:
+upstream's manualInjection (SOI 0, so a zero injection period) moves each
+new parcel over the whole first step before the step's motion moves the
+cloud again, so MPPICFoam's first step applies gravity twice and its
+cloud runs one step of free fall (9.8 mm/s) ahead of ours in velocity
+(the first step is not timed); the isotropy model's random numbers are
+different streams, so the two clouds follow the same flow statistically,
+not parcel by parcel; ours carries more per-parcel properties (T, Cp,
+surface accommodation) that it does not use in vacuum.
+
+Each repetition runs, serially and one after another, each on a fresh
+copy from t = 0 for --steps steps: ours (cachedDual), ours (dual),
+MPPICFoam.  Nothing is written during the runs (writeInterval beyond the
+run), so no run pays for writing the parcels.  The cost per parcel-step
+comes from each solver's own ExecutionTime (CPU) between the end of its
+first step and its last, so start-up (mesh, parcels, the stock injection)
+and the first step are left out:
+
+    c = (ExecutionTime_N - ExecutionTime_1)/((N - 1) n_parcels)
+
+Reported: c of each run per repetition (with the run's clock/CPU ratio
+over the same steps, from ClockTime in whole seconds: well above 1 means
+it competed for a core), the
+minimum over the repetitions, and the ratios ours/MPPICFoam of the minima
+(cachedDual, dual).  Target: cachedDual/MPPICFoam <= 0.5; above,
+MISSES TARGET.  A run that fails, or ends with another number of parcels
+than it started with, counts as failed (exit status 1); else exit 0.
+
+Run from the project directory:
+
+    . etc/bashrc && bench/mppic/bench.py [--steps N] [--repeat R]
+
+Defaults: --steps 50 --repeat 2 (about 7 minutes).  Outputs under
+build/bench/mppic/.
+"""
+
+import argparse
+import os
+import re
+import shutil
+import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                "..", "..", "src", "python"))
+from rmf import foam  # noqa: E402
+
+TUTORIAL = os.path.join(foam.PROJECT_DIR, "tutorials", "solids", "sniderSedimentation")
+BUILD = os.path.join(foam.PROJECT_DIR, "build", "bench", "mppic")
+STOCK_TUTORIAL = os.path.join(os.environ.get("FOAM_TUTORIALS", ""), "lagrangian",
+                              "MPPICFoam", "column")
+DT = 1e-3
+RHO_CARRIER = 2.5e-3        # kg/m^3: 1e-6 of the grains' 2500
+NU_CARRIER = 1e-5           # m^2/s
+N_PARTICLE = 749
+D_PARCEL = 3e-4             # m
+
+# (label, application, averagingMethod); the first is the target's
+RUNS = (("ours cachedDual", "rarefiedMultiphaseFoam", "cachedDual"),
+        ("ours dual", "rarefiedMultiphaseFoam", "dual"),
+        ("MPPICFoam", "MPPICFoam", "dual"))
+TARGET = 0.5
+
+_WALL = "{ type rebound; e 0.85; mu 0; }"
+
+# The MPPIC set-up both clouds get (entry: value, set with foamDictionary)
+MPPIC_ENTRIES = {
+    "constantProperties/rho0": "2500",
+    "subModels/dispersionModel": "none",
+    "subModels/patchInteractionModel": "localInteraction",
+    "subModels/localInteractionCoeffs":
+        f"{{ patches ( sides {_WALL} bottom {_WALL} top {_WALL} ); }}",
+    "subModels/packingModel": "explicit",
+    "subModels/explicitCoeffs":
+        "{ particleStressModel { type HarrisCrighton; alphaPacked 0.6;"
+        " pSolid 10; beta 2; eps 1e-7; }"
+        " correctionLimitingMethod { type absolute; e 0.85; } }",
+    "subModels/dampingModel": "none",
+    "subModels/isotropyModel": "stochastic",
+    "subModels/stochasticCoeffs":
+        "{ timeScaleModel { type isotropic; alphaPacked 0.6; e 0.85; } }",
+    "subModels/stochasticCollisionModel": "none",
+}
+
+# Grain forces: ours in vacuum has gravity only; the stock cloud also drag
+OUR_FORCES = "{ gravity; }"
+STOCK_FORCES = "{ gravity; ErgunWenYuDrag { alphac alpha.air; } }"
+
+HEADER = """\
+/*--------------------------------*- C++ -*----------------------------------*\\
+  rarefiedMultiphaseFoam: bench/mppic (stock MPPICFoam case)
+\\*---------------------------------------------------------------------------*/
+FoamFile
+{{
+    version     2.0;
+    format      ascii;
+    class       {cls};
+    location    "{location}";
+    object      {name};
+}}
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+"""
+
+# Stock cloud: the skeleton; MPPIC_ENTRIES and STOCK_FORCES are set on it
+STOCK_CLOUD = f"""\
+solution
+{{
+    active          true;
+    coupled         true;
+    transient       yes;
+    cellValueSourceCorrection off;
+    interpolationSchemes
+    {{
+        rho.air         cell;
+        U.air           cell;       // column tutorial: cellPoint (dearer)
+        mu.air          cell;
+    }}
+    averagingMethod dual;
+    integrationSchemes
+    {{
+        U               Euler;
+    }}
+    sourceTerms
+    {{
+        schemes
+        {{
+            U           semiImplicit 1;
+        }}
+    }}
+}}
+
+constantProperties
+{{
+    rho0            2500;
+    alphaMax        0.9;        // MPPICFoam: carrier alpha >= 0.1 (carrier only)
+}}
+
+subModels
+{{
+    particleForces  {{}}
+    injectionModels
+    {{
+        grains
+        {{
+            type            manualInjection;
+            massTotal       0;
+            parcelBasisType fixed;
+            nParticle       {N_PARTICLE};
+            SOI             0;
+            positionsFile   "kinematicCloudPositions";
+            U0              (0 0 0);
+            sizeDistribution
+            {{
+                type        fixedValue;
+                fixedValueDistribution
+                {{
+                    value   {D_PARCEL};
+                }}
+            }}
+        }}
+    }}
+    heatTransferModel none;
+    surfaceFilmModel none;
+    radiation       off;
+}}
+
+cloudFunctions
+{{
+}}
+"""
+
+STOCK_TRANSPORT = f"""\
+continuousPhase air;
+
+rho.air         {RHO_CARRIER};  // 1e-6 of the grains' density
+
+transportModel  Newtonian;
+nu              {NU_CARRIER};
+"""
+
+STOCK_FIELD = """\
+dimensions      {dims};
+
+internalField   uniform {value};
+
+boundaryField
+{{
+    ".*"
+    {{
+        {bc}
+    }}
+}}
+"""
+
+STOCK_CONTROL = """\
+application     MPPICFoam;
+startFrom       startTime;
+startTime       0;
+stopAt          endTime;
+endTime         1;
+deltaT          1;
+writeControl    timeStep;
+writeInterval   1;
+purgeWrite      0;
+writeFormat     ascii;
+writePrecision  8;
+writeCompression off;
+timeFormat      general;
+timePrecision   6;
+runTimeModifiable false;
+"""
+
+
+def write_foam_file(path, cls, body):
+    location = os.path.basename(os.path.dirname(path))
+    with open(path, "w") as f:
+        f.write(HEADER.format(cls=cls, location=location, name=os.path.basename(path)))
+        f.write(body)
+
+
+def set_controls(case, steps):
+    """Run from t = 0 for steps steps of DT, writing nothing."""
+    control = "system/controlDict"
+    foam.set_entry(case, control, "startFrom", "startTime")
+    foam.set_entry(case, control, "startTime", "0")
+    foam.set_entry(case, control, "deltaT", f"{DT:g}")
+    foam.set_entry(case, control, "endTime", f"{steps*DT:.6g}")
+    foam.set_entry(case, control, "writeControl", "timeStep")
+    foam.set_entry(case, control, "writeInterval", str(steps + 1))
+    foam.set_entry(case, control, "runTimeModifiable", "false")
+
+
+def set_mppic(case, cloud_dict, forces, averaging):
+    for entry, value in MPPIC_ENTRIES.items():
+        foam.set_entry(case, cloud_dict, entry, value)
+    foam.set_entry(case, cloud_dict, "subModels/particleForces", forces)
+    foam.set_entry(case, cloud_dict, "solution/averagingMethod", averaging)
+
+
+def prepare_ours(steps):
+    """Our case, meshed and initialised, with the shared MPPIC set-up."""
+    case = foam.copy_setup(TUTORIAL, os.path.join(BUILD, "ours-init"))
+    set_controls(case, steps)
+    set_mppic(case, "constant/grainsProperties", OUR_FORCES, "cachedDual")
+    foam.run(case, "blockMesh")
+    foam.run(case, "rarefiedMultiphaseInitialise")
+    return case
+
+
+def prepare_stock(ours, steps):
+    """The stock MPPICFoam case: our mesh, our initial parcel positions."""
+    case = os.path.join(BUILD, "stock-init")
+    if os.path.exists(case):
+        shutil.rmtree(case)
+    for sub in ("0", "constant", "system"):
+        os.makedirs(os.path.join(case, sub))
+    shutil.copytree(os.path.join(ours, "constant", "polyMesh"),
+                    os.path.join(case, "constant", "polyMesh"))
+    shutil.copy(os.path.join(ours, "constant", "g"), os.path.join(case, "constant"))
+    for name in ("system/fvSchemes", "system/fvSolution",
+                 "constant/turbulenceProperties.air"):
+        shutil.copy(os.path.join(STOCK_TUTORIAL, name), os.path.join(case, name))
+
+    positions = foam.read_positions(
+        os.path.join(ours, "0", "lagrangian", "grains", "positions"))
+    write_foam_file(os.path.join(case, "constant", "kinematicCloudPositions"),
+                    "vectorField",
+                    f"{len(positions)}\n(\n"
+                    + "".join(f"({x:.17g} {y:.17g} {z:.17g})\n" for x, y, z in positions)
+                    + ")\n")
+    write_foam_file(os.path.join(case, "constant", "kinematicCloudProperties"),
+                    "dictionary", STOCK_CLOUD)
+    set_mppic(case, "constant/kinematicCloudProperties", STOCK_FORCES, "dual")
+    write_foam_file(os.path.join(case, "constant", "transportProperties"),
+                    "dictionary", STOCK_TRANSPORT)
+    write_foam_file(os.path.join(case, "0", "U.air"), "volVectorField",
+                    STOCK_FIELD.format(dims="[0 1 -1 0 0 0 0]", value="(0 0 0)",
+                                       bc="type noSlip;"))
+    write_foam_file(os.path.join(case, "0", "p"), "volScalarField",
+                    STOCK_FIELD.format(dims="[0 2 -2 0 0 0 0]", value="0",
+                                       bc="type fixedFluxPressure; value uniform 0;"))
+    write_foam_file(os.path.join(case, "system", "controlDict"), "dictionary",
+                    STOCK_CONTROL)
+    set_controls(case, steps)
+    return case, len(positions)
+
+
+_CLOCK = re.compile(r"ExecutionTime = [0-9.eE+-]+ s\s+ClockTime = ([0-9.eE+-]+) s")
+
+
+def parcel_cost(init, label, app, averaging, rep, steps, parcels):
+    """CPU seconds per parcel-step of one run, and its clock/CPU ratio."""
+    case = foam.copy_case(init, os.path.join(BUILD, f"{label.replace(' ', '-')}-{rep}"))
+    if app == "rarefiedMultiphaseFoam":
+        foam.set_entry(case, "constant/grainsProperties", "solution/averagingMethod",
+                       averaging)
+    log = foam.run(case, app)
+    et = foam.execution_times(log)
+    if len(et) != steps:
+        raise RuntimeError(f"{log}: {len(et)} steps timed, expected {steps}")
+    counts = foam.log_values(log, "Current number of parcels")
+    if len(counts) < steps or counts[-1][0] != parcels:
+        raise RuntimeError(f"{log}: ends with {counts[-1][0] if len(counts) else 0:g} "
+                           f"parcels, expected {parcels}")
+    with open(log) as f:
+        clock = [float(x) for x in _CLOCK.findall(f.read())]
+    cpu = et[-1] - et[0]
+    ratio = (clock[-1] - clock[0])/cpu if len(clock) == steps and cpu > 0 else float("nan")
+    return cpu/((steps - 1)*parcels), ratio
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("--steps", type=int, default=50)
+    parser.add_argument("--repeat", type=int, default=2)
+    args = parser.parse_args()
+    if args.steps < 2:
+        parser.error("--steps must be at least 2")
+    if not os.path.isdir(STOCK_TUTORIAL):
+        parser.error(f"no MPPICFoam column tutorial at {STOCK_TUTORIAL} (. etc/bashrc first)")
+
+    ours = prepare_ours(args.steps)
+    stock, parcels = prepare_stock(ours, args.steps)
+    inits = {"rarefiedMultiphaseFoam": ours, "MPPICFoam": stock}
+    print(f"sniderSedimentation: {foam.n_cells(ours)} cells, {parcels} parcels x "
+          f"{N_PARTICLE}, {args.steps} steps of {DT:g} s")
+
+    costs = {label: [] for label, _, _ in RUNS}
+    try:
+        for rep in range(args.repeat):
+            for label, app, averaging in RUNS:
+                cost, load = parcel_cost(inits[app], label, app, averaging, rep,
+                                         args.steps, parcels)
+                costs[label].append(cost)
+                print(f"repetition {rep}: {label:16s} {1e6*cost:8.4f} us CPU per "
+                      f"parcel-step ({cost*parcels:.3f} s per step; clock/CPU "
+                      f"{load:.2f})", flush=True)
+    except Exception as err:            # a failed run: report it, exit 1
+        print(f"FAILED: {err}")
+        if getattr(err, "output", None):
+            print(err.output)
+        return 1
+
+    best = {label: min(c) for label, c in costs.items()}
+    stock_best = best["MPPICFoam"]
+    for label, _, _ in RUNS:
+        print(f"minimum {label:16s} {1e6*best[label]:8.4f} us CPU per parcel-step"
+              f"  ratio to MPPICFoam {best[label]/stock_best:.3f}")
+    ratio = best["ours cachedDual"]/stock_best
+    ratio_dual = best["ours dual"]/stock_best
+    verdict = "" if ratio <= TARGET else " MISSES TARGET"
+    print(f"bench mppic: ratio ours/MPPICFoam = {ratio:.3f} (target <= {TARGET}){verdict}, "
+          f"ours with dual {ratio_dual:.3f}; sniderSedimentation, {parcels} parcels, "
+          f"{args.steps} steps; ours {1e6*best['ours cachedDual']:.3f}, "
+          f"MPPICFoam {1e6*stock_best:.3f} us CPU per parcel-step (first step left out)")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

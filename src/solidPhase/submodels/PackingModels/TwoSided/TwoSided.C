@@ -1,0 +1,346 @@
+/*---------------------------------------------------------------------------*\
+  rarefiedMultiphaseFoam
+  Copyright (C) 2026 The rarefiedMultiphaseFoam authors
+  SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
+\*---------------------------------------------------------------------------*/
+
+#include "TwoSided.H"
+#include "keywordChecks.H"
+#include "inputChecks.H"
+#include "cellFields.H"
+#include "wallPolyPatch.H"
+#include "syncTools.H"
+
+// * * * * * * * * * * * * * * * Input checks  * * * * * * * * * * * * * * * //
+
+template<class CloudType>
+void Foam::PackingModels::TwoSided<CloudType>::checkCoeffs
+(
+    const dictionary& subModels
+)
+{
+    const dictionary& coeffs = subModels.subDict(typeName + "Coeffs");
+
+    inputChecks::rejectUnknown
+    (
+        coeffs, {"particleStressModel", "e", "alphaMin", "relief"}
+    );
+    inputChecks::getClosed(coeffs, "e", 0, 1);
+
+    const scalar alphaMin = coeffs.getOrDefault<scalar>("alphaMin", 1e-4);
+    if (!(alphaMin > 0 && alphaMin < 1))
+    {
+        inputChecks::outOfRange(coeffs, "alphaMin", alphaMin, "(0, 1)");
+    }
+    if (coeffs.found("relief"))
+    {
+        inputChecks::getClosed(coeffs, "relief", 0, 1);
+    }
+}
+
+
+// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
+
+template<class CloudType>
+template<class Type>
+Foam::autoPtr<Foam::AveragingMethod<Type>>
+Foam::PackingModels::TwoSided<CloudType>::newAverage(const word& name) const
+{
+    const fvMesh& mesh = this->owner().mesh();
+
+    return AveragingMethod<Type>::New
+    (
+        IOobject
+        (
+            this->owner().name() + ":" + name,
+            mesh.time().timeName(),
+            mesh
+        ),
+        this->owner().solution().dict(),
+        mesh
+    );
+}
+
+
+template<class CloudType>
+void Foam::PackingModels::TwoSided<CloudType>::findNeighbours()
+{
+    const fvMesh& mesh = this->owner().mesh();
+    const vectorField& C = mesh.cellCentres();
+    const labelUList& own = mesh.owner();
+    const labelUList& nei = mesh.neighbour();
+
+    // Best alignment found so far, per cell and direction
+    FixedList<scalarField, vector::nComponents> bestBelow, bestAbove;
+    const scalar least = aligned;
+    for (direction i = 0; i < vector::nComponents; ++i)
+    {
+        below_[i] = identity(mesh.nCells());
+        above_[i] = identity(mesh.nCells());
+        bestBelow[i].setSize(mesh.nCells(), -least);
+        bestAbove[i].setSize(mesh.nCells(), least);
+    }
+
+    // Offset d from cell c to what lies across one of its faces
+    auto consider = [&](const label c, const vector& d, const label across)
+    {
+        const vector dHat = d/max(mag(d), VSMALL);
+        for (direction i = 0; i < vector::nComponents; ++i)
+        {
+            if (dHat[i] < bestBelow[i][c])
+            {
+                bestBelow[i][c] = dHat[i];
+                below_[i][c] = across;
+            }
+            if (dHat[i] > bestAbove[i][c])
+            {
+                bestAbove[i][c] = dHat[i];
+                above_[i][c] = across;
+            }
+        }
+    };
+
+    forAll(own, facei)
+    {
+        consider(own[facei], C[nei[facei]] - C[own[facei]], nei[facei]);
+        consider(nei[facei], C[own[facei]] - C[nei[facei]], own[facei]);
+    }
+
+    // Walls are at rest; across coupled patches (processor, cyclic) lies
+    // the cell whose mean comes from swapBoundaryCellList; open
+    // boundaries leave the cell its own mean
+    pointField nbrC;
+    syncTools::swapBoundaryCellPositions(mesh, C, nbrC);
+    for (const polyPatch& pp : mesh.boundaryMesh())
+    {
+        const bool isWall = isA<wallPolyPatch>(pp);
+        if (!isWall && !pp.coupled())
+        {
+            continue;
+        }
+        forAll(pp, i)
+        {
+            const label facei = pp.start() + i;
+            const label c = own[facei];
+            if (isWall)
+            {
+                consider(c, mesh.faceCentres()[facei] - C[c], wall);
+            }
+            else
+            {
+                const label bFacei = facei - mesh.nInternalFaces();
+                consider(c, nbrC[bFacei] - C[c], coupled(bFacei));
+            }
+        }
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+template<class CloudType>
+Foam::PackingModels::TwoSided<CloudType>::TwoSided
+(
+    const dictionary& dict,
+    CloudType& owner
+)
+:
+    PackingModel<CloudType>(dict, owner, typeName),
+    e_(this->coeffDict().template get<scalar>("e")),
+    alphaMin_
+    (
+        this->coeffDict().template getOrDefault<scalar>("alphaMin", 1e-4)
+    ),
+    relief_(this->coeffDict().template getOrDefault<scalar>("relief", 0)),
+    cellLength_(cbrt(owner.mesh().V().field())),
+    volumeAverage_(nullptr),
+    massAverage_(nullptr),
+    uAverage_(nullptr),
+    stressAverage_(nullptr),
+    uStart_(nullptr),
+    uEnd_(nullptr),
+    uCell_(),
+    uNbr_(),
+    started_(false)
+{
+    checkCoeffs(dict);
+    findNeighbours();
+}
+
+
+template<class CloudType>
+Foam::PackingModels::TwoSided<CloudType>::TwoSided
+(
+    const TwoSided<CloudType>& cm
+)
+:
+    PackingModel<CloudType>(cm),
+    e_(cm.e_),
+    alphaMin_(cm.alphaMin_),
+    relief_(cm.relief_),
+    cellLength_(cm.cellLength_),
+    volumeAverage_(nullptr),
+    massAverage_(nullptr),
+    uAverage_(nullptr),
+    stressAverage_(nullptr),
+    uStart_(nullptr),
+    uEnd_(nullptr),
+    below_(cm.below_),
+    above_(cm.above_),
+    uCell_(),
+    uNbr_(),
+    started_(false)
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+template<class CloudType>
+void Foam::PackingModels::TwoSided<CloudType>::cacheFields(const bool store)
+{
+    PackingModel<CloudType>::cacheFields(store);
+
+    const fvMesh& mesh = this->owner().mesh();
+    const word& cloudName = this->owner().name();
+
+    if (store)
+    {
+        volumeAverage_ =
+            &mesh.lookupObject<AveragingMethod<scalar>>
+            (
+                cloudName + ":volumeAverage"
+            );
+        massAverage_ =
+            &mesh.lookupObject<AveragingMethod<scalar>>
+            (
+                cloudName + ":massAverage"
+            );
+        uAverage_ =
+            &mesh.lookupObject<AveragingMethod<vector>>
+            (
+                cloudName + ":uAverage"
+            );
+
+        stressAverage_ = newAverage<scalar>("stressAverage");
+        stressAverage_() =
+            this->particleStressModel_->tau
+            (
+                *volumeAverage_,
+                mesh.lookupObject<AveragingMethod<scalar>>
+                (
+                    cloudName + ":rhoAverage"
+                ),
+                mesh.lookupObject<AveragingMethod<scalar>>
+                (
+                    cloudName + ":uSqrAverage"
+                )
+            )();
+
+        if (!uStart_.valid())
+        {
+            uStart_ = newAverage<vector>("twoSidedStartVelocity");
+            uEnd_ = newAverage<vector>("twoSidedEndVelocity");
+        }
+        uEnd_() = Zero;
+
+        uCell_ =
+            started_ ? uStart_->primitiveField() : uAverage_->primitiveField();
+        uNbr_.setSize(mesh.nBoundaryFaces());
+        syncTools::swapBoundaryCellList(mesh, uCell_, uNbr_);
+
+        if (mesh.time().writeTime())
+        {
+            writeCellField
+            (
+                mesh, cloudName, "alphaAverage", dimless,
+                volumeAverage_->primitiveField()()
+            );
+        }
+    }
+    else
+    {
+        // The corrected velocities' mean: u_m of the next step
+        uEnd_->average(*massAverage_);
+        uStart_() = uEnd_();
+        started_ = true;
+
+        volumeAverage_ = nullptr;
+        massAverage_ = nullptr;
+        uAverage_ = nullptr;
+        stressAverage_.clear();
+    }
+}
+
+
+template<class CloudType>
+Foam::vector Foam::PackingModels::TwoSided<CloudType>::velocityCorrection
+(
+    typename CloudType::parcelType& p,
+    const scalar deltaT
+) const
+{
+    const tetIndices tetIs(p.currentTetIndices());
+
+    const scalar alpha =
+        max(volumeAverage_->interpolate(p.coordinates(), tetIs), alphaMin_);
+    const vector tauGrad =
+        stressAverage_->interpolateGrad(p.coordinates(), tetIs);
+    const vector uMean =
+        started_
+      ? uStart_->interpolate(p.coordinates(), tetIs)
+      : uAverage_->interpolate(p.coordinates(), tetIs);
+
+    // Stress correction (Snider's eq. 38 without drag; above alphaPacked
+    // the stress counts as infinitely stiff: the limits alone apply) and
+    // the slip reflected about the mean (eqs. 39-41)
+    const scalar alphaPacked = this->particleStressModel_->alphaPacked();
+    const bool stiff = alpha >= alphaPacked;
+    const vector dU = -deltaT*tauGrad/(p.rho()*alpha);
+    const vector reflected = (1 + e_)*(uMean - p.U());
+
+    // Over-packed: the speed that takes the share relief of the cell's
+    // excess out in one step
+    const scalar uRelief =
+        alpha > alphaPacked
+      ? relief_*(1 - alphaPacked/alpha)*cellLength_[p.cell()]/deltaT
+      : 0;
+
+    vector uCorr(Zero);
+    for (direction i = 0; i < vector::nComponents; ++i)
+    {
+        // Pushed away from the stressed side, at most to the velocity of
+        // the neighbour there (clamped at rest: it may stop the parcel,
+        // never drive it) plus the relief, or by the reflected slip
+        const bool up = tauGrad[i] <= 0;
+        const label n = (up ? below_ : above_)[i][p.cell()];
+        const scalar uSide =
+            n >= 0 ? uCell_[n][i]
+          : n == wall ? scalar(0)
+          : uNbr_[coupled(n)][i];
+
+        if (up)
+        {
+            const scalar stopped = min(uSide, scalar(0)) + uRelief - p.U()[i];
+            const scalar limit = max(reflected[i], stopped);
+            uCorr[i] = max(scalar(0), stiff ? limit : min(dU[i], limit));
+        }
+        else
+        {
+            const scalar stopped = max(uSide, scalar(0)) - uRelief - p.U()[i];
+            const scalar limit = min(reflected[i], stopped);
+            uCorr[i] = min(scalar(0), stiff ? limit : max(dU[i], limit));
+        }
+    }
+
+    uEnd_->add
+    (
+        p.coordinates(),
+        tetIs,
+        p.nParticle()*p.mass()*(p.U() + uCorr)
+    );
+
+    return uCorr;
+}
+
+
+// ************************************************************************* //
