@@ -5,8 +5,7 @@ gives upstream's dual averaging to the bit.
 
 A reduced copy of the Snider sedimentation set-up (20 000 parcels, MPPIC as
 the tutorial has it: twoSided packing, relaxation damping and stochastic
-isotropy, which
-find the cloud's averages by name) runs 40 steps from one initial state
+isotropy, which find the cloud's averages by name) runs 40 steps from one initial state
 with averagingMethod dual and with cachedDual, serially and on 2 METIS
 ranks.  Expected: every file of the last time directory (the parcels'
 positions, velocities and all their properties, the Eulerian fields) is
