@@ -128,14 +128,19 @@ def carried(case, time, expected):
     return worst
 
 
-def bed_surface(z, alpha):
-    """Height where alpha(z) first falls through alphaPacked/2, from below."""
-    half = 0.5*ALPHA_PACKED
+def falls_through(z, alpha, level):
+    """Height where alpha(z) first falls through level, from below,
+    linear between layer centres (nan if it never does)."""
     for k in range(1, len(z)):
-        if alpha[k - 1] >= half > alpha[k]:
-            return float(z[k - 1] + (half - alpha[k - 1])
+        if alpha[k - 1] >= level > alpha[k]:
+            return float(z[k - 1] + (level - alpha[k - 1])
                          * (z[k] - z[k - 1])/(alpha[k] - alpha[k - 1]))
     return float("nan")
+
+
+def bed_surface(z, alpha):
+    """Height where alpha(z) first falls through alphaPacked/2, from below."""
+    return falls_through(z, alpha, 0.5*ALPHA_PACKED)
 
 
 def surface_width(z, alpha):
@@ -159,12 +164,7 @@ def surface_width(z, alpha):
 def interface_width(z, alpha, bed):
     """10-90 % width: height between where alpha(z) falls through 0.9 bed
     and through 0.1 bed, from below, linear between layer centres."""
-    def through(level):
-        for k in range(1, len(z)):
-            if alpha[k - 1] >= level > alpha[k]:
-                return z[k - 1] + (level - alpha[k - 1])*(z[k] - z[k - 1])/(alpha[k] - alpha[k - 1])
-        return float("nan")
-    return float(through(0.1*bed) - through(0.9*bed))
+    return falls_through(z, alpha, 0.1*bed) - falls_through(z, alpha, 0.9*bed)
 
 
 def summary(case, times=TIMES):
