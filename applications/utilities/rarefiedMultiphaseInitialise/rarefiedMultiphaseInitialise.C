@@ -33,6 +33,7 @@ Description
 #include "fvCFD.H"
 #include "gasCloud.H"
 #include "basicSolidCloud.H"
+#include "demSolidCloud.H"
 #include "regionFill.H"
 #include "inputChecks.H"
 #include "keywordChecks.H"
@@ -40,25 +41,19 @@ Description
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
-// Fill the solid cloud of the case, if its initialisation dictionary exists
-static bool initialiseSolids(const fvMesh& mesh, const word& cloudName)
+// Fill the regions of initDict into a new cloud of parcels of kind
+// CloudType and write it
+template<class CloudType>
+static void fillSolids
+(
+    const fvMesh& mesh,
+    const word& cloudName,
+    const IOdictionary& initDict
+)
 {
-    IOobject header
-    (
-        cloudName + "InitialiseDict",
-        mesh.time().system(),
-        mesh,
-        IOobject::MUST_READ,
-        IOobject::NO_WRITE,
-        false
-    );
+    typedef typename CloudType::parcelType parcelType;
 
-    if (!header.typeHeaderOk<IOdictionary>(true))
-    {
-        return false;
-    }
-
-    basicSolidCloud::checkInput(cloudName, mesh);
+    CloudType::checkInput(cloudName, mesh);
 
     const IOdictionary cloudProps
     (
@@ -70,7 +65,6 @@ static bool initialiseSolids(const fvMesh& mesh, const word& cloudName)
     word alphaMaxWhat;
     const scalar alphaMax = regionFill::alphaLimit(cloudProps, alphaMaxWhat);
 
-    const IOdictionary initDict(header);
     inputChecks::rejectMisspelt(initDict, {"randomSeed", "regions"});
     const label seed =
         inputChecks::getLabelOrDefault(initDict, "randomSeed", 0, 0, 2000);
@@ -80,10 +74,7 @@ static bool initialiseSolids(const fvMesh& mesh, const word& cloudName)
     Info<< "Initialising solid cloud " << cloudName << " (seed " << seed
         << ")" << nl;
 
-    Cloud<basicSolidParcel> cloud
-    (
-        mesh, cloudName, IDLList<basicSolidParcel>()
-    );
+    Cloud<parcelType> cloud(mesh, cloudName, IDLList<parcelType>());
 
     const regionFill::cloudSetup setup{mesh, constProps, axisymmetric, rnd};
 
@@ -111,6 +102,51 @@ static bool initialiseSolids(const fvMesh& mesh, const word& cloudName)
     {
         FatalErrorInFunction
             << "Failed writing cloud " << cloudName << exit(FatalError);
+    }
+}
+
+
+// Fill the solid cloud of the case, if its initialisation dictionary
+// exists, with parcels of the kind its cloudType names
+static bool initialiseSolids(const fvMesh& mesh, const word& cloudName)
+{
+    IOobject header
+    (
+        cloudName + "InitialiseDict",
+        mesh.time().system(),
+        mesh,
+        IOobject::MUST_READ,
+        IOobject::NO_WRITE,
+        false
+    );
+
+    if (!header.typeHeaderOk<IOdictionary>(true))
+    {
+        return false;
+    }
+
+    const IOdictionary initDict(header);
+    const word kind
+    (
+        inputChecks::readCloudProperties(cloudName, mesh)
+       .getOrDefault<word>("cloudType", "basicSolidCloud")
+    );
+
+    if (kind == "demSolidCloud")
+    {
+        fillSolids<demSolidCloud>(mesh, cloudName, initDict);
+    }
+    else if (kind == "basicSolidCloud")
+    {
+        fillSolids<basicSolidCloud>(mesh, cloudName, initDict);
+    }
+    else
+    {
+        inputChecks::notOneOf
+        (
+            inputChecks::readCloudProperties(cloudName, mesh), "cloudType",
+            kind, {"basicSolidCloud", "demSolidCloud"}
+        );
     }
 
     return true;

@@ -5,11 +5,13 @@
 
 Description
     Registers the interphase coupling models (doc/physics.md section 4) for
-    basicSolidCloud, with gasCloud as the gas.
+    each grain cloud kind (basicSolidCloud, demSolidCloud), with gasCloud
+    as the gas.
 
 \*---------------------------------------------------------------------------*/
 
 #include "basicSolidCloud.H"
+#include "demSolidCloud.H"
 #include "gasCloud.H"
 
 #include "InterphaseCouplingModel.H"
@@ -30,6 +32,15 @@ makeInterphaseCouplingModelType(LothCoupling, basicSolidCloud);
 makeInterphaseCouplingModelType(AdaptiveCoupling, basicSolidCloud);
 makeInterphaseCouplingModelType(TwoWayDirectCoupling, basicSolidCloud);
 makeInterphaseCouplingModelType(TwoWayIndirectCoupling, basicSolidCloud);
+
+makeInterphaseCouplingModel(demSolidCloud);
+
+makeInterphaseCouplingModelType(NoInterphaseCoupling, demSolidCloud);
+makeInterphaseCouplingModelType(OneWayCoupling, demSolidCloud);
+makeInterphaseCouplingModelType(LothCoupling, demSolidCloud);
+makeInterphaseCouplingModelType(AdaptiveCoupling, demSolidCloud);
+makeInterphaseCouplingModelType(TwoWayDirectCoupling, demSolidCloud);
+makeInterphaseCouplingModelType(TwoWayIndirectCoupling, demSolidCloud);
 
 
 // ************************************************************************* //

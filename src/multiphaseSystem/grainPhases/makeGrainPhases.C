@@ -10,10 +10,12 @@ Description
 
 #include "CoupledGrainCloud.H"
 #include "basicSolidCloud.H"
+#include "demSolidCloud.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
 makeGrainPhase(basicSolidCloud);
+makeGrainPhase(demSolidCloud);
 
 
 // ************************************************************************* //

@@ -169,7 +169,8 @@ Foam::scalar Foam::regionFill::alphaLimit
 )
 {
     const dictionary& models = cloudProps.subDict("subModels");
-    const word packing(models.get<word>("packingModel"));
+    // A cloud without an MPPIC layer (DEM) has no packing model
+    const word packing(models.getOrDefault<word>("packingModel", "none"));
 
     if (packing == "none")
     {
@@ -185,60 +186,45 @@ Foam::scalar Foam::regionFill::alphaLimit
 }
 
 
-Foam::label Foam::regionFill::fill
+Foam::regionFill::drawing Foam::regionFill::drawAll
 (
-    Cloud<basicSolidParcel>& cloud,
     const scalar alphaMax,
     const word& alphaMaxWhat
 )
 {
     label nParcels = 0;
-    scalar W = 0;
-    count(alphaMax, alphaMaxWhat, nParcels, W);
+    drawing parcels;
+    count(alphaMax, alphaMaxWhat, nParcels, parcels.W);
 
     // Draw: the same sequence on every processor (each parcel's point,
     // then its velocity), whichever processor keeps the parcel
-    pointField xs(nParcels);
-    vectorField Us(sigmaU_ > 0 ? nParcels : 0);
+    parcels.xs.setSize(nParcels);
+    parcels.Us.setSize(sigmaU_ > 0 ? nParcels : 0);
     for (label i = 0; i < nParcels; ++i)
     {
-        xs[i] = draw(i);
+        parcels.xs[i] = draw(i);
 
         // Drawn for every parcel, kept or not, so that every processor
         // follows the same sequence
         if (sigmaU_ > 0)
         {
-            Us[i] = U0_ + sigmaU_*rnd_.GaussNormal<vector>();
+            parcels.Us[i] = U0_ + sigmaU_*rnd_.GaussNormal<vector>();
         }
     }
-    const labelList cells(locate(xs));
+    parcels.cells = locate(parcels.xs);
 
-    // Place, in the order drawn: each parcel where it lies
-    label nHere = 0;
-    scalar realHere = 0;
-    forAll(xs, i)
-    {
-        const point& x = xs[i];
-        const label celli = cells[i];
-        if (celli < 0)
-        {
-            continue;       // Another processor's, or outside the mesh
-        }
+    return parcels;
+}
 
-        basicSolidParcel* p = new basicSolidParcel(mesh_, x, celli);
-        p->typeId() = constProps_.parcelTypeId();
-        p->nParticle() = W*axisymmetric_.weightAt(x);
-        realHere += p->nParticle();
-        p->d() = d_;
-        p->dTarget() = d_;
-        p->rho() = constProps_.rho0();
-        p->U() = sigmaU_ > 0 ? Us[i] : U0_;
-        p->setMaterial(constProps_);
-        p->T() = T0_;
-        cloud.addParticle(p);
-        ++nHere;
-    }
 
+Foam::label Foam::regionFill::placed
+(
+    const drawing& parcels,
+    const label nHere,
+    const scalar realHere
+) const
+{
+    const label nParcels = parcels.xs.size();
     const label nPlaced = returnReduce(nHere, sumOp<label>());
     if (nPlaced != nParcels)
     {
@@ -252,7 +238,7 @@ Foam::label Foam::regionFill::fill
     }
 
     Info<< "    " << dict_.dictName() << ": " << nParcels << " parcels of "
-        << W << " particles";
+        << parcels.W << " particles";
     if (axisymmetric_.weighted())
     {
         Info<< " on the axis (mean radial weight factor " << meanWeight_
@@ -273,6 +259,8 @@ Foam::label Foam::regionFill::fill
 
     return nPlaced;
 }
+
+
 
 
 // ************************************************************************* //

@@ -18,6 +18,13 @@
 #include "ParticleStressModel.H"
 #include "TimeScaleModel.H"
 #include "AveragingMethod.H"
+#include "MPPICCloud.H"
+#include "CollidingCloud.H"
+#include "CollisionModel.H"
+#include "PairModel.H"
+#include "WallModel.H"
+#include "PairLinearSpringDashpot.H"
+#include "WallLinearSpringDashpot.H"
 
 // * * * * * * * * * * * * * * * Input checks  * * * * * * * * * * * * * * * //
 
@@ -81,33 +88,17 @@ inline void checkRebound(const dictionary& dict)
     }
 }
 
-} // End namespace solidCloudChecks
-} // End namespace Foam
 
-
+//- The models of the MPPIC layer
 template<class CloudType>
-const Foam::word& Foam::SolidCloud<CloudType>::checkInput
-(
-    const word& cloudName,
-    const fvMesh& mesh
-)
+void checkLayer(const dictionary& props, const MPPICCloud<CloudType>*)
 {
-    using namespace solidCloudChecks;
+    typedef MPPICCloud<CloudType> mppicType;
 
-    typedef typename CloudType::MPPICCloudType mppicType;
-    typedef typename CloudType::kinematicCloudType kinematicType;
-
-    const IOdictionary props(readCloudProperties(cloudName, mesh));
-
-    const dictionary& solution = props.subDict("solution");
-    modelName<AveragingMethod<scalar>>(solution, "averagingMethod");
-
-    const dictionary& constProps = props.subDict("constantProperties");
-    getPositive(constProps, "rho0");
-    getPositive(constProps, "T0");
-    getPositive(constProps, "Cp0");
-    getClosed(constProps, "specularFraction", 0, 1);
-    getClosed(constProps, "thermalAccommodation", 0, 1);
+    modelName<AveragingMethod<scalar>>
+    (
+        props.subDict("solution"), "averagingMethod"
+    );
 
     const dictionary& models = props.subDict("subModels");
 
@@ -141,6 +132,90 @@ const Foam::word& Foam::SolidCloud<CloudType>::checkInput
     {
         checkTimeScale(models.subDict(isotropy + "Coeffs"));
     }
+}
+
+
+//- The models of the colliding (DEM) layer; 3-D only
+template<class CloudType>
+void checkLayer(const dictionary& props, const CollidingCloud<CloudType>*)
+{
+    typedef CollidingCloud<CloudType> collidingType;
+
+    if (props.getOrDefault<bool>("axisymmetric", false))
+    {
+        badValue
+        (
+            props, "axisymmetric", "true",
+            "false (DEM grains are resolved in 3-D)"
+        );
+    }
+
+    const dictionary& models = props.subDict("subModels");
+    const word collision
+    (
+        modelName<CollisionModel<collidingType>>(models, "collisionModel")
+    );
+    if (collision != "pairCollision")
+    {
+        return;
+    }
+
+    const dictionary& coeffs = models.subDict("pairCollisionCoeffs");
+    getPositive(coeffs, "maxInteractionDistance");
+
+    // Upstream takes the walls' velocity from this field, which must
+    // exist; ours is the carrier's, and our wall model holds walls at rest
+    const word U(coeffs.getOrDefault<word>("U", "U"));
+    if (U != "U.gas")
+    {
+        badValue
+        (
+            coeffs, "U", U,
+            "U.gas (the solver's carrier velocity field; walls are at rest)"
+        );
+    }
+
+    const word pair(modelName<PairModel<collidingType>>(coeffs, "pairModel"));
+    if (pair == PairLinearSpringDashpot<collidingType>::typeName)
+    {
+        linearContact(coeffs.subDict(pair + "Coeffs"));
+    }
+
+    const word wall(modelName<WallModel<collidingType>>(coeffs, "wallModel"));
+    if (wall == WallLinearSpringDashpot<collidingType>::typeName)
+    {
+        linearContact(coeffs.subDict(wall + "Coeffs"));
+    }
+}
+
+} // End namespace solidCloudChecks
+} // End namespace Foam
+
+
+template<class CloudType>
+const Foam::word& Foam::SolidCloud<CloudType>::checkInput
+(
+    const word& cloudName,
+    const fvMesh& mesh
+)
+{
+    using namespace solidCloudChecks;
+
+    typedef typename CloudType::kinematicCloudType kinematicType;
+
+    const IOdictionary props(readCloudProperties(cloudName, mesh));
+
+    const dictionary& constProps = props.subDict("constantProperties");
+    getPositive(constProps, "rho0");
+    getPositive(constProps, "T0");
+    getPositive(constProps, "Cp0");
+    getClosed(constProps, "specularFraction", 0, 1);
+    getClosed(constProps, "thermalAccommodation", 0, 1);
+
+    const dictionary& models = props.subDict("subModels");
+
+    // The layer below ours: MPPIC or colliding
+    checkLayer(props, static_cast<const CloudType*>(nullptr));
 
     const word collisions
     (
@@ -209,13 +284,56 @@ const Foam::word& Foam::SolidCloud<CloudType>::checkInput
             "particleForces", "injectionModels", "dispersionModel",
             "patchInteractionModel", "stochasticCollisionModel",
             "surfaceFilmModel", "packingModel", "dampingModel",
-            "isotropyModel", "interphaseCoupling"
+            "isotropyModel", "interphaseCoupling", "collisionModel"
         },
         false
     );
 
     return cloudName;
 }
+
+
+// * * * * * * * * * * * * * * * Layer reports * * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace solidCloudLayers
+{
+
+//- The MPPIC layer adds nothing to the step's report
+template<class CloudType>
+void info(const MPPICCloud<CloudType>&)
+{}
+
+
+//- The colliding layer's contacts at the end of the step (a contact's
+//  record lives while the grains overlap; a grain-grain contact is
+//  recorded by both grains, across processors too)
+template<class CloudType>
+void info(const CollidingCloud<CloudType>& cloud)
+{
+    label grains = 0;
+    label pairRecords = 0;
+    label walls = 0;
+    for (const auto& p : cloud)
+    {
+        const label nPair = p.collisionRecords().pairRecords().size();
+        const label nWall = p.collisionRecords().wallRecords().size();
+        pairRecords += nPair;
+        walls += nWall;
+        grains += (nPair + nWall > 0);
+    }
+    reduce(grains, sumOp<label>());
+    reduce(pairRecords, sumOp<label>());
+    reduce(walls, sumOp<label>());
+
+    Info<< "    Grains in contact               = " << grains << nl
+        << "    Grain-grain contacts            = " << pairRecords/2 << nl
+        << "    Grain-wall contacts             = " << walls << nl;
+}
+
+} // End namespace solidCloudLayers
+} // End namespace Foam
 
 
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
@@ -348,7 +466,7 @@ void Foam::SolidCloud<CloudType>::evolve()
     nBefore_ = this->size();
     nInjectedBefore_ = nInjected();
 
-    // As MPPICCloud::evolve, but tracking with this cloud so that the
+    // As upstream's MPPIC and colliding evolve, but tracking with this cloud so that the
     // parcels reach the account and the material properties
     typename parcelType::trackingData td(*this);
     this->solve(*this, td);
@@ -377,6 +495,7 @@ template<class CloudType>
 void Foam::SolidCloud<CloudType>::info()
 {
     CloudType::info();
+    solidCloudLayers::info(*this);
     account_.info(this->mesh().boundaryMesh());
 }
 

@@ -6,6 +6,7 @@
 
 #include "SolidParcel.H"
 #include "processorPolyPatch.H"
+#include "MPPICParcel.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -46,6 +47,45 @@ Foam::SolidParcel<ParcelType>::constantProperties::constantProperties
     specularFraction_(this->dict_, "specularFraction"),
     thermalAccommodation_(this->dict_, "thermalAccommodation")
 {}
+
+
+// * * * * * * * * * * * * * * * Layer specifics * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace solidParcelLayers
+{
+
+//- Velocity corrections of the layer below on a wedge: none but MPPIC's
+template<class ParcelType>
+struct wedgeCorrection
+{
+    template<class Parcel, class TrackingData>
+    static void drop(Parcel&, const TrackingData&)
+    {}
+};
+
+//- MPPIC's damping and packing corrections lose their z part (see
+//  SolidParcel.H, axisymmetric mode)
+template<class ParcelType>
+struct wedgeCorrection<MPPICParcel<ParcelType>>
+{
+    template<class Parcel, class TrackingData>
+    static void drop(Parcel& p, const TrackingData& td)
+    {
+        if
+        (
+            td.part() == TrackingData::tpDampingNoTrack
+         || td.part() == TrackingData::tpPackingNoTrack
+        )
+        {
+            p.UCorrect().z() = 0;
+        }
+    }
+};
+
+} // End namespace solidParcelLayers
+} // End namespace Foam
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
@@ -89,15 +129,7 @@ bool Foam::SolidParcel<ParcelType>::move
         return keep;
     }
 
-    typedef typename ParcelType::trackingData trackingData;
-    if
-    (
-        td.part() == trackingData::tpDampingNoTrack
-     || td.part() == trackingData::tpPackingNoTrack
-    )
-    {
-        this->UCorrect().z() = 0;
-    }
+    solidParcelLayers::wedgeCorrection<ParcelType>::drop(*this, td);
 
     if (keep)
     {
