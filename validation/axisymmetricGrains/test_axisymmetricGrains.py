@@ -104,11 +104,7 @@ def _run(name, entries=(), src=WEDGE, np_=1):
     _set(case, entries)
     foam.run(case, "blockMesh")
     foam.run(case, "rarefiedMultiphaseInitialise")
-    if np_ > 1:
-        foam.run(case, "decomposePar")
-    foam.run(case, "rarefiedMultiphaseFoam", np_=np_)
-    if np_ > 1:
-        foam.run(case, "reconstructPar")
+    foam.run_solver(case, np_)
     return case
 
 

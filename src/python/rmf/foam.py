@@ -121,6 +121,17 @@ def run(case, *args, log=None, np_=1):
     return os.path.join(case, log)
 
 
+def run_solver(case, np_=1):
+    """rarefiedMultiphaseFoam on an initialised case, serial or on np_
+    ranks (decomposePar before, reconstructPar after); returns the log."""
+    if np_ > 1:
+        run(case, "decomposePar")
+    log = run(case, "rarefiedMultiphaseFoam", np_=np_)
+    if np_ > 1:
+        run(case, "reconstructPar")
+    return log
+
+
 def set_entry(case, dict_path, entry, value):
     """Set one entry of a case dictionary with foamDictionary."""
     subprocess.run(["foamDictionary", "-entry", entry, "-set", str(value),
