@@ -12,3 +12,9 @@ def run_failing(case, app):
     proc = subprocess.run([app], cwd=case, capture_output=True, text=True)
     assert proc.returncode != 0, f"{app} accepted bad input"
     return proc.stdout + proc.stderr
+
+
+def report(name, ok, text):
+    """Print a check's PASS/FAIL line with its figures; returns ok."""
+    print(f"{'PASS' if ok else 'FAIL'} {name}: {text}")
+    return ok

@@ -70,6 +70,7 @@ import numpy as np
 import pytest
 
 from rmf import foam
+from rmf_testing import report
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 CASE = os.path.join(HERE, "box")
@@ -84,11 +85,6 @@ RHO = 2700.0                # [kg/m^3]
 MASS = RHO*math.pi*D**3/6   # one grain [kg]
 KN = 8000.0                 # [N/m]
 L = 0.01                    # box side [m]
-
-
-def report(name, ok, text):
-    print(f"{'PASS' if ok else 'FAIL'} {name}: {text}")
-    return ok
 
 
 def zeta(e):

@@ -108,6 +108,7 @@ import numpy as np
 import pytest
 
 from rmf import foam
+from rmf_testing import report
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 CASE = os.path.join(HERE, "granularGas")
@@ -126,11 +127,6 @@ DT = 5e-4                   # time step [s]
 MASS = RHO*np.pi*D**3/6     # one grain [kg]
 NREAL = W*N/VBOX            # real number density [1/m^3]
 SIGMA = np.pi*D**2          # cross-section of two equal grains [m^2]
-
-
-def report(name, ok, text):
-    print(f"{'PASS' if ok else 'FAIL'} {name}: {text}")
-    return ok
 
 
 def run_case(name, steps, entries=(), init_entries=()):
