@@ -42,12 +42,13 @@ Description
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
 // Fill the regions of initDict into a new cloud of parcels of kind
-// CloudType and write it
+// CloudType (dictionary cloudProps) and write it
 template<class CloudType>
 static void fillSolids
 (
     const fvMesh& mesh,
     const word& cloudName,
+    const IOdictionary& cloudProps,
     const IOdictionary& initDict
 )
 {
@@ -55,10 +56,6 @@ static void fillSolids
 
     CloudType::checkInput(cloudName, mesh);
 
-    const IOdictionary cloudProps
-    (
-        inputChecks::readCloudProperties(cloudName, mesh)
-    );
     const basicSolidParcel::constantProperties constProps(cloudProps);
     const axisymmetricMode axisymmetric(cloudProps, mesh, cloudName);
 
@@ -126,26 +123,28 @@ static bool initialiseSolids(const fvMesh& mesh, const word& cloudName)
     }
 
     const IOdictionary initDict(header);
-    const word kind
+    const IOdictionary cloudProps
     (
         inputChecks::readCloudProperties(cloudName, mesh)
-       .getOrDefault<word>("cloudType", "basicSolidCloud")
+    );
+    const word kind
+    (
+        cloudProps.getOrDefault<word>("cloudType", "basicSolidCloud")
     );
 
     if (kind == "demSolidCloud")
     {
-        fillSolids<demSolidCloud>(mesh, cloudName, initDict);
+        fillSolids<demSolidCloud>(mesh, cloudName, cloudProps, initDict);
     }
     else if (kind == "basicSolidCloud")
     {
-        fillSolids<basicSolidCloud>(mesh, cloudName, initDict);
+        fillSolids<basicSolidCloud>(mesh, cloudName, cloudProps, initDict);
     }
     else
     {
         inputChecks::notOneOf
         (
-            inputChecks::readCloudProperties(cloudName, mesh), "cloudType",
-            kind, {"basicSolidCloud", "demSolidCloud"}
+            cloudProps, "cloudType", kind, {"basicSolidCloud", "demSolidCloud"}
         );
     }
 

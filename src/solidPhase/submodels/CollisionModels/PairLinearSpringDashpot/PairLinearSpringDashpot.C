@@ -51,13 +51,8 @@ const Foam::point& Foam::PairLinearSpringDashpot<CloudType>::positionOf
 template<class CloudType>
 Foam::label Foam::PairLinearSpringDashpot<CloudType>::nSubCycles() const
 {
-    const scalar mMin = linearContact::lightest(this->owner());
-
-    if (mMin < GREAT)
-    {
-        // Two of the lightest grains
-        contact_.checkTimeStep(this->owner().db().time(), mMin/2);
-    }
+    // The lightest contact: two of the lightest grains
+    contact_.checkTimeStep(this->owner(), 0.5);
 
     return 1;
 }

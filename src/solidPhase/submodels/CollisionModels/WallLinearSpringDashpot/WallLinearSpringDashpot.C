@@ -63,12 +63,7 @@ void Foam::WallLinearSpringDashpot<CloudType>::evaluateSite
 template<class CloudType>
 Foam::label Foam::WallLinearSpringDashpot<CloudType>::nSubCycles() const
 {
-    const scalar mMin = linearContact::lightest(this->owner());
-
-    if (mMin < GREAT)
-    {
-        contact_.checkTimeStep(this->owner().db().time(), mMin);
-    }
+    contact_.checkTimeStep(this->owner(), 1);
 
     return 1;
 }

@@ -77,7 +77,7 @@ void Foam::linearContact::checkTimeStep
             time.controlDict(), "deltaT", dt,
             "(0, t_c/5 = " + name(tc/5) + "] s, t_c = " + name(tc)
           + " s the contact time of kn = " + name(kn_) + ", e = "
-          + name(e_) + " in " + dict_.name() + " for the lightest pair"
+          + name(e_) + " in " + dict_.name() + " for the lightest contact"
             " (t_c/50 recommended)"
         );
     }
