@@ -9,9 +9,8 @@ x 5 mm (z, periodic); 800 grains, d = 1 mm, rho = 2700 kg/m^3; lunar
 gravity 1.63 m/s^2 (-y); linear spring-dashpot with Coulomb friction,
 k_n = k_t = 8000 N/m, e = 0.8, mu = 0.2, eta_t = eta_n/2, grain-grain
 and grain-wall alike; dt = t_c/50 = 5.92e-7 s (t_c of a grain pair).
-Start: a lattice of 9 x 4 grains per layer (spacing 1.11 x 1.25 mm),
-layers 1.1 mm apart from y = 0.55 mm, the first 800 points, each
-jittered by up to 0.45 of the free gap (fixed seed), at rest.
+Start: the erosion box's loose lattice at rest (rmf.erosion.bed_positions,
+one jitter seed per --seeds).
 
 Peer: LAMMPS (Debian's `lammps`, installed by this script with apt when
 missing), pair_style gran/hooke/history with Kn = Kt = 8000 N/m, gamma_n =
@@ -23,10 +22,16 @@ sqrt(2) times ours: 0.73 instead of 0.8); fix nve/sphere (velocity
 Verlet); neighbour skin 0.2 mm, rebuilt as needed.  Same positions, same
 dt, same steps.
 
+Ours: demSolidCloud with collisionModel cartesianContacts (the contacts
+in sub-steps of dt inside case steps of PER_CASE_STEP of them); the
+previous code, pairCollision with the same contacts (a case step per
+contact step), for --pair-steps steps.
+
 Measured, one run each, serially and one after the other:
-- CPU time per grain-step: ours from the solver's ExecutionTime between
-  its first and last step; LAMMPS from its "Loop time"; the ratio
-  ours/LAMMPS (target: <= 2);
+- CPU time per grain-step (contact step): ours from the solver's
+  ExecutionTime between its first and last case step; LAMMPS from its
+  "Loop time"; the ratio ours/LAMMPS (target: <= 2), and pairCollision's
+  over ours;
 - with --settle (the whole settle, 0.25 s: 420 000 steps): the settled
   bed height (mean of the 20 highest centres + d/2) and the packing
   fraction between 2 d above the floor and 2 d below the bed height, in
@@ -34,6 +39,7 @@ Measured, one run each, serially and one after the other:
   (--seeds gives each code several jitter seeds to measure it).
 
     /usr/bin/python3 bench/dem/bench.py [--steps N] [--settle] [--seeds K]
+                                        [--pair-steps N]
 
 Runs under build/bench/dem.  Prints a table and writes
 build/bench/dem/results.txt.
@@ -51,10 +57,13 @@ import numpy as np
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
                                 "..", "..", "src", "python"))
-from rmf import foam  # noqa: E402
+from rmf import erosion, foam  # noqa: E402
 
 BOX = os.path.join(foam.PROJECT_DIR, "validation", "demContacts", "box")
 BUILD = os.path.join(foam.PROJECT_DIR, "build", "bench", "dem")
+# cartesianContacts: contact steps per case step (the erosion box's case
+# step of 2e-5 s is 34 of them)
+PER_CASE_STEP = 34
 
 D = 1e-3
 RHO = 2700.0
@@ -79,23 +88,6 @@ TC = math.pi/math.sqrt(KN/M_EFF - (ETA_N/(2*M_EFF))**2)
 DT = TC/50
 
 
-def initial_positions(seed):
-    nx, nz, dy = 9, 4, 1.1e-3
-    sx, sz = LX/nx, LZ/nz
-    rng = np.random.default_rng(seed)
-    pts = []
-    j = 0
-    while len(pts) < N:
-        for i in range(nx):
-            for k in range(nz):
-                if len(pts) < N:
-                    pts.append([(i + 0.5)*sx, 0.55e-3 + j*dy, (k + 0.5)*sz])
-        j += 1
-    pts = np.array(pts)
-    gap = 0.45*np.array([sx - D, dy - D, sz - D])
-    return pts + rng.uniform(-1, 1, pts.shape)*gap
-
-
 # ---------------------------------------------------------------------------
 # Ours
 
@@ -115,7 +107,10 @@ boundary
 """
 
 
-def run_ours(x0, steps, name):
+def run_ours(x0, steps, name, contacts):
+    """Our DEM on the box: contacts "pair" (pairCollision, a case step per
+    contact step) or "cartesian" (cartesianContacts, PER_CASE_STEP contact
+    steps per case step); CPU per grain-step and the final positions."""
     case = foam.copy_setup(BOX, os.path.join(BUILD, name))
     with open(os.path.join(case, "system", "blockMeshDict"), "w") as f:
         f.write(BLOCKMESH)
@@ -130,22 +125,29 @@ def run_ours(x0, steps, name):
                 f"    bed {{ type positionsFile; file bedPositions; nParticle 1;"
                 f" d {D}; U0 (0 0 0); }}\n}}\n")
     props = "constant/grainsProperties"
-    for coeffs in ("pairLinearSpringDashpotCoeffs", "wallLinearSpringDashpotCoeffs"):
-        path = f"subModels/pairCollisionCoeffs/{coeffs}/"
+    for path in ("subModels/pairCollisionCoeffs/pairLinearSpringDashpotCoeffs/",
+                 "subModels/pairCollisionCoeffs/wallLinearSpringDashpotCoeffs/",
+                 "subModels/cartesianContactsCoeffs/grainGrain/",
+                 "subModels/cartesianContactsCoeffs/grainWall/"):
         for key, value in (("kn", KN), ("kt", KT), ("e", E), ("mu", MU)):
             foam.set_entry(case, props, path + key, value)
+    per_step = 1
+    if contacts == "cartesian":
+        foam.set_entry(case, props, "subModels/collisionModel", "cartesianContacts")
+        per_step = PER_CASE_STEP
     foam.set_entry(case, "constant/g", "value", f"(0 {-G} 0)")
     control = "system/controlDict"
-    foam.set_entry(case, control, "deltaT", f"{DT:.17g}")
-    foam.set_entry(case, control, "endTime", f"{steps*DT:.17g}")
-    foam.set_entry(case, control, "writeInterval", steps)
+    case_steps = -(-steps//per_step)
+    foam.set_entry(case, control, "deltaT", f"{per_step*DT:.17g}")
+    foam.set_entry(case, control, "endTime", f"{case_steps*per_step*DT:.17g}")
+    foam.set_entry(case, control, "writeInterval", case_steps)
     foam.run(case, "blockMesh")
     foam.run(case, "rarefiedMultiphaseInitialise")
     log = foam.run(case, "rarefiedMultiphaseFoam")
     cpu = foam.execution_times(log)
     path = os.path.join(case, foam.latest_time(case), "lagrangian", "grains")
     x = foam.read_positions(os.path.join(path, "positions"))
-    return (cpu[-1] - cpu[0])/((len(cpu) - 1)*N), x
+    return (cpu[-1] - cpu[0])/((len(cpu) - 1)*per_step*N), x
 
 
 # ---------------------------------------------------------------------------
@@ -225,6 +227,8 @@ def main():
     parser.add_argument("--settle", action="store_true",
                         help=f"run the whole settle ({SETTLE} s) and compare the beds")
     parser.add_argument("--seeds", type=int, default=1)
+    parser.add_argument("--pair-steps", type=int, default=2000,
+                        help="steps of the previous code (pairCollision), 0: none")
     args = parser.parse_args()
     steps = int(round(SETTLE/DT)) if args.settle else args.steps
     ensure_lammps()
@@ -232,8 +236,8 @@ def main():
     print(f"bench/dem: {N} grains, dt = {DT:.4e} s (t_c/50), {steps} steps")
     rows = []
     for seed in range(1, args.seeds + 1):
-        x0 = initial_positions(seed)
-        ours, x_ours = run_ours(x0, steps, f"ours-{seed}")
+        x0 = erosion.bed_positions(seed)
+        ours, x_ours = run_ours(x0, steps, f"ours-{seed}", "cartesian")
         theirs, x_lmp = run_lammps(x0, steps, f"lammps-{seed}")
         rows.append((seed, ours, theirs, bed(x_ours), bed(x_lmp)))
     lines = [f"{'seed':>4} {'ours us/grain-step':>20} {'LAMMPS':>10} {'ratio':>7}"
@@ -249,6 +253,13 @@ def main():
         f"{'' if ratio <= 2 else ' MISSES TARGET'}; {N} grains, {steps} steps;"
         f" ours {1e6*min(r[1] for r in rows):.3f}, LAMMPS {1e6*min(r[2] for r in rows):.3f}"
         " us CPU per grain-step")
+    if args.pair_steps:
+        pair, _ = run_ours(erosion.bed_positions(1), args.pair_steps, "pair-1", "pair")
+        best = min(r[1] for r in rows)
+        lines.append(
+            f"bench dem: cartesianContacts against pairCollision (the previous code,"
+            f" first {args.pair_steps} steps): {pair/best:.1f} times faster;"
+            f" pairCollision {1e6*pair:.3f} us CPU per grain-step")
     text = "\n".join(lines)
     print(text)
     with open(os.path.join(BUILD, "results.txt"), "w") as f:

@@ -1,8 +1,15 @@
 # rarefiedMultiphaseFoam. Copyright (C) 2026 The rarefiedMultiphaseFoam authors
 # SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
 """Soft-sphere DEM contacts: verification of pairLinearSpringDashpot and
-wallLinearSpringDashpot (doc/physics.md 5.4), end to end on the solver with
-the demSolidCloud (case box/: a walled cube of 10 mm, no gas).
+wallLinearSpringDashpot under pairCollision, and of the same contacts
+under cartesianContacts (doc/physics.md 5.4, 5.4.1), end to end on the
+solver with the demSolidCloud (case box/: a walled cube of 10 mm, no
+gas).  Each check runs with both collision models ("pair": a case step
+per contact step; "cartesian": case steps of PER_STEP = 10 contact steps
+of the same length), but the processor boundary (pairCollision only) and
+the bad input of each model.  Haff's law and the settled bed run with
+cartesianContacts in ./Alltest and with pairCollision under --long (2
+and 1.7 minutes with pairCollision, seconds with cartesianContacts).
 
 Grains: d = 1 mm, rho = 2700 kg/m^3 (m = 1.414e-6 kg), k_n = k_t = 8000 N/m
 (Berger et al. 2013, Table II).  For a linear spring-dashpot of effective
@@ -78,6 +85,12 @@ BUILD = os.path.join(foam.PROJECT_DIR, "build", "validation", "demContacts")
 PROPS = "constant/grainsProperties"
 PAIR = "subModels/pairCollisionCoeffs/pairLinearSpringDashpotCoeffs/"
 WALL = "subModels/pairCollisionCoeffs/wallLinearSpringDashpotCoeffs/"
+CARTESIAN = "subModels/cartesianContactsCoeffs/"
+
+# The contacts of pairCollision (case step = contact step) and of
+# cartesianContacts (case step = PER_STEP contact steps)
+CONTACTS = ["pair", "cartesian"]
+PER_STEP = {"pair": 1, "cartesian": 10}
 
 D = 1e-3                    # grain diameter [m]
 R = D/2
@@ -162,13 +175,28 @@ def make_tall(case, h):
         f.write(text)
 
 
+def use_cartesian(case):
+    """Switch the case to collisionModel cartesianContacts with the pair
+    and wall coefficients it has (50 sub-steps per contact time of the
+    lightest contact)."""
+    for name, path in (("grainGrain", PAIR), ("grainWall", WALL)):
+        for key in ("kn", "kt", "e", "mu", "tangentialDamping"):
+            foam.set_entry(case, PROPS, f"{CARTESIAN}{name}/{key}",
+                           foam.get_entry(case, PROPS, path + key))
+    foam.set_entry(case, PROPS, "subModels/collisionModel", "cartesianContacts")
+
+
 def run_case(name, groups, dt, steps, entries=(), seed=1, cyclic="",
-             np_=1, size=L, gravity=None, write_every=None, height=1):
+             np_=1, size=L, gravity=None, write_every=None, height=1,
+             contacts="pair", per_step=1):
     """Run a copy of the box with the grains of groups for steps steps of
     dt, written at the start and the end (cyclic: the axes whose patches
     are cyclic; np_ = 2: on two ranks, split in x; size: the cube's side
     [m]; height: its height over its side; gravity: g [m/s^2]); returns
-    (case, wall time)."""
+    (case, wall time).  contacts "cartesian": collisionModel
+    cartesianContacts instead of pairCollision, with case steps of
+    per_step times dt (steps and write_every divided by per_step, rounded
+    up)."""
     case = foam.copy_setup(CASE, os.path.join(BUILD, name))
     write_grains(case, groups, seed)
     make_cyclic(case, cyclic)
@@ -179,6 +207,11 @@ def run_case(name, groups, dt, steps, entries=(), seed=1, cyclic="",
                        "({} {} {})".format(*gravity))
     for entry, value in entries:
         foam.set_entry(case, PROPS, entry, value)
+    if contacts == "cartesian":
+        use_cartesian(case)
+        dt *= per_step
+        steps = -(-steps//per_step)
+        write_every = write_every and -(-write_every//per_step)
     control = "system/controlDict"
     foam.set_entry(case, control, "deltaT", f"{dt:.17g}")
     foam.set_entry(case, control, "endTime", f"{steps*dt:.17g}")
@@ -212,8 +245,9 @@ def final_time(case):
 # 1. Normal impacts
 
 
+@pytest.mark.parametrize("contacts", CONTACTS)
 @pytest.mark.parametrize("e", [0.8, 0.6, 0.5])
-def test_binary_normal_impact(e):
+def test_binary_normal_impact(e, contacts):
     m_eff = MASS/2
     tc = contact_time(e, m_eff)
     dt = tc/50
@@ -226,23 +260,25 @@ def test_binary_normal_impact(e):
     t_start = g0/(2*v0)
     steps = int(math.ceil((t_start + 2*tc)/dt))
     entries = [(PAIR + "e", e), (WALL + "e", e)]
-    case, _ = run_case(f"binary_e{e}", groups, dt, steps, entries)
+    case, _ = run_case(f"binary_e{e}_{contacts}", groups, dt, steps, entries,
+                       contacts=contacts, per_step=PER_STEP[contacts])
     tf = float(final_time(case))
     x, U, _ = state(case, final_time(case))
     w_f = U[1, 0] - U[0, 0]
     g_f = x[1, 0] - x[0, 0] - D
     e_meas = w_f/(2*v0)
     tc_meas = (tf - g_f/w_f) - t_start
-    ok_e = report(f"binary impact e (e = {e})", abs(e_meas/e - 1) < 0.01,
+    ok_e = report(f"binary impact e (e = {e}, {contacts})", abs(e_meas/e - 1) < 0.01,
                   f"{e_meas:.5f} vs {e} ({100*(e_meas/e - 1):+.3f} %, tol 1 %)")
-    ok_t = report(f"binary impact t_c (e = {e})", abs(tc_meas/tc - 1) < 0.01,
+    ok_t = report(f"binary impact t_c (e = {e}, {contacts})", abs(tc_meas/tc - 1) < 0.01,
                   f"{tc_meas:.6e} s vs {tc:.6e} s ({100*(tc_meas/tc - 1):+.3f} %,"
                   " tol 1 %)")
     assert ok_e and ok_t
 
 
-@pytest.mark.parametrize("where", ["cyclic", "processor"])
-def test_binary_impact_across(where):
+@pytest.mark.parametrize("where,contacts", [
+    ("cyclic", "pair"), ("processor", "pair"), ("cyclic", "cartesian")])
+def test_binary_impact_across(where, contacts):
     """The binary impact of 1. with the contact across a cyclic patch (the
     grains at either end of the periodic box, the gap through x = 0) or
     across the processor boundary of two ranks at x = 5 mm."""
@@ -265,9 +301,10 @@ def test_binary_impact_across(where):
         }
     t_start = g0/(2*v0)
     steps = int(math.ceil((t_start + 2*tc)/dt))
-    case, _ = run_case(f"binary_{where}", groups, dt, steps,
+    case, _ = run_case(f"binary_{where}_{contacts}", groups, dt, steps,
                        cyclic=("x" if where == "cyclic" else ""),
-                       np_=(2 if where == "processor" else 1))
+                       np_=(2 if where == "processor" else 1),
+                       contacts=contacts, per_step=PER_STEP[contacts])
     tf = float(final_time(case))
     x, U, _ = state(case, final_time(case))
     w_f = U[1, 0] - U[0, 0]
@@ -279,14 +316,15 @@ def test_binary_impact_across(where):
     e_meas = w_f/(2*v0)
     tc_meas = (tf - g_f/w_f) - t_start
     ok = report(
-        f"binary impact across a {where} boundary",
+        f"binary impact across a {where} boundary ({contacts})",
         abs(e_meas/e - 1) < 0.01 and abs(tc_meas/tc - 1) < 0.01,
         f"e = {e_meas:.5f} ({100*(e_meas/e - 1):+.3f} %), t_c = {tc_meas:.6e} s"
         f" ({100*(tc_meas/tc - 1):+.3f} %), tol 1 %")
     assert ok
 
 
-def test_wall_normal_impact():
+@pytest.mark.parametrize("contacts", CONTACTS)
+def test_wall_normal_impact(contacts):
     e = 0.8
     tc = contact_time(e, MASS)
     dt = tc/50
@@ -294,15 +332,16 @@ def test_wall_normal_impact():
     groups = {"a": (np.array([[0.005, R + g0, 0.005]]), (0, -v0, 0), 0)}
     t_start = g0/v0
     steps = int(math.ceil((t_start + 2*tc)/dt))
-    case, _ = run_case("wall_normal", groups, dt, steps)
+    case, _ = run_case(f"wall_normal_{contacts}", groups, dt, steps,
+                       contacts=contacts, per_step=PER_STEP[contacts])
     tf = float(final_time(case))
     x, U, _ = state(case, final_time(case))
     w_f = U[0, 1]
     e_meas = w_f/v0
     tc_meas = (tf - (x[0, 1] - R)/w_f) - t_start
-    ok_e = report("wall impact e", abs(e_meas/e - 1) < 0.01,
+    ok_e = report(f"wall impact e ({contacts})", abs(e_meas/e - 1) < 0.01,
                   f"{e_meas:.5f} vs {e} ({100*(e_meas/e - 1):+.3f} %, tol 1 %)")
-    ok_t = report("wall impact t_c", abs(tc_meas/tc - 1) < 0.01,
+    ok_t = report(f"wall impact t_c ({contacts})", abs(tc_meas/tc - 1) < 0.01,
                   f"{tc_meas:.6e} s vs {tc:.6e} s ({100*(tc_meas/tc - 1):+.3f} %,"
                   " tol 1 %)")
     assert ok_e and ok_t
@@ -332,7 +371,8 @@ def walton_sticking(u, e, kt=KN, ratio=0.5):
 
 @pytest.mark.parametrize("regime,psi,mu", [
     ("sliding", 3.0, 0.2), ("sliding", 6.0, 0.2), ("sticking", 0.2, 50.0)])
-def test_oblique_wall_impact(regime, psi, mu):
+@pytest.mark.parametrize("contacts", CONTACTS)
+def test_oblique_wall_impact(regime, psi, mu, contacts):
     e = 0.8
     tc = contact_time(e, MASS)
     dt = tc/50
@@ -341,7 +381,8 @@ def test_oblique_wall_impact(regime, psi, mu):
     groups = {"a": (np.array([[0.002, R + g0, 0.005]]), (u, -vn, 0), 0)}
     steps = int(math.ceil((g0/vn + 2*tc)/dt))
     entries = [(WALL + "mu", mu)]
-    case, _ = run_case(f"oblique_{regime}_{psi}", groups, dt, steps, entries)
+    case, _ = run_case(f"oblique_{regime}_{psi}_{contacts}", groups, dt, steps, entries,
+                       contacts=contacts, per_step=PER_STEP[contacts])
     _, U, omega = state(case, final_time(case))
     # Spin about z: the contact point at -R y moves with u + omega_z R
     u1, w1 = U[0, 0], omega[0, 2]*R
@@ -351,7 +392,7 @@ def test_oblique_wall_impact(regime, psi, mu):
         u_exp, w_exp = walton_sticking(u, e)
     beta = -(u1 + w1)/u
     ok = report(
-        f"oblique impact, {regime} (psi = {psi}, mu = {mu})",
+        f"oblique impact, {regime} (psi = {psi}, mu = {mu}, {contacts})",
         abs(u1 - u_exp) < 0.01*vn*max(1, psi) and abs(w1 - w_exp) < 0.01*vn*max(1, psi),
         f"u' = {u1:.5f} vs {u_exp:.5f} m/s, omega'R = {w1:.5f} vs {w_exp:.5f} m/s,"
         f" beta = {beta:.4f} (tol 1 % of the impact speed)")
@@ -374,7 +415,8 @@ def elastic_energy(x, k=KN):
     return E
 
 
-def test_energy_conservation():
+@pytest.mark.parametrize("contacts", CONTACTS)
+def test_energy_conservation(contacts):
     tc = contact_time(1.0, MASS/2)
     dt = tc/50
     grid = (np.arange(8) + 0.5)*(L/8)
@@ -382,10 +424,13 @@ def test_energy_conservation():
     groups = {"lattice": (xs, (0, 0, 0), 1.0)}
     steps = 7000
     entries = [(PAIR + "e", 1), (PAIR + "mu", 0), (WALL + "e", 1), (WALL + "mu", 0)]
-    case, wall = run_case("energy", groups, dt, steps, entries)
+    case, wall = run_case(f"energy_{contacts}", groups, dt, steps, entries,
+                          contacts=contacts, per_step=PER_STEP[contacts])
     log = os.path.join(case, "log.rarefiedMultiphaseFoam")
-    contact_steps = (foam.log_values(log, "Grain-grain contacts")[:, 0].sum()
-                     + foam.log_values(log, "Grain-wall contacts")[:, 0].sum())
+    # The log's contacts are those at the end of each case step
+    contact_steps = PER_STEP[contacts]*(
+        foam.log_values(log, "Grain-grain contacts")[:, 0].sum()
+        + foam.log_values(log, "Grain-wall contacts")[:, 0].sum())
     collisions = contact_steps/(tc/dt)
     x0, U0, w0 = state(case, "0")
     x1, U1, w1 = state(case, final_time(case))
@@ -397,11 +442,11 @@ def test_energy_conservation():
 
     E0, E1 = energy(x0, U0, w0), energy(x1, U1, w1)
     drift = E1/E0 - 1
-    print(f"energy: {collisions:.0f} collisions, {steps} steps, {wall:.1f} s"
+    print(f"energy ({contacts}): {collisions:.0f} collisions, {steps} steps, {wall:.1f} s"
           f" ({1e6*wall/(steps*len(xs)):.2f} us per grain-step)")
     ok_n = report("collisions counted", collisions > 1e4,
                   f"{collisions:.0f} (needs > 1e4)")
-    ok_e = report("energy drift (e = 1, mu = 0)", abs(drift) < 1e-3,
+    ok_e = report(f"energy drift (e = 1, mu = 0, {contacts})", abs(drift) < 1e-3,
                   f"{drift:+.2e} over {collisions:.0f} collisions (tol 1e-3)")
     assert ok_n and ok_e
 
@@ -440,6 +485,19 @@ def run_failing(name, entries, control=()):
     ("U", [("subModels/pairCollisionCoeffs/U", "U")], [], ["'U'", "U.gas"]),
     ("axisymmetric", [("axisymmetric", "true")], [], ["'axisymmetric'"]),
     ("deltaT", [], [("deltaT", 2e-5)], ["'deltaT'", "controlDict", "t_c/5"]),
+    ("stepsPerContact", [("subModels/collisionModel", "cartesianContacts"),
+                         (CARTESIAN + "stepsPerContact", 3)], [],
+     ["'stepsPerContact'", "3", "[5, inf)"]),
+    ("neighbourSkin", [("subModels/collisionModel", "cartesianContacts"),
+                       (CARTESIAN + "neighbourSkin", 0)], [],
+     ["'neighbourSkin'", "(0, 1]"]),
+    ("cartesian_e", [("subModels/collisionModel", "cartesianContacts"),
+                     (CARTESIAN + "grainGrain/e", 1.5)], [], ["'e'", "1.5", "(0, 1]"]),
+    ("cartesian_unknown", [("subModels/collisionModel", "cartesianContacts"),
+                           (CARTESIAN + "grainWall/muu", 0.2)], [], ["muu"]),
+    ("cartesian_force", [("subModels/collisionModel", "cartesianContacts"),
+                         ("subModels/particleForces", "{ gravity; pressureGradient { U U.gas; } }")],
+     [], ["'pressureGradient'", "gravity only"]),
 ])
 def test_bad_input(name, entries, control, expect):
     text = run_failing(name, entries, control)
@@ -472,9 +530,11 @@ def lattice(n, size):
     return np.array([[a, b, c] for a in grid for b in grid for c in grid])
 
 
-@pytest.mark.parametrize("e,periods", [
-    pytest.param(0.9, 0.5, marks=pytest.mark.long), (0.7, 1.0)])
-def test_haff_cooling(e, periods):
+@pytest.mark.parametrize("e,periods,contacts", [
+    pytest.param(0.9, 0.5, "pair", marks=pytest.mark.long),
+    pytest.param(0.7, 1.0, "pair", marks=pytest.mark.long),
+    (0.9, 0.5, "cartesian"), (0.7, 1.0, "cartesian")])
+def test_haff_cooling(e, periods, contacts):
     """Smooth inelastic spheres (mu = 0) in a fully periodic box cool as
     theta(t) = theta_0/(1 + t/tau)^2, with the classical inelastic hard-
     sphere tau (twice the NTC model's, see validation/grainCollisions) and
@@ -486,9 +546,9 @@ def test_haff_cooling(e, periods):
 
     512 grains on a lattice at alpha = 0.05 (g0 = 1.137), Maxwellian
     velocities of theta_0 = 1 m^2/s^2 (seed 1); dt = t_c/50; run for
-    `periods` tau (e = 0.7: 1 tau, 26 000 steps, in ./Alltest; e = 0.9:
-    0.5 tau, 35 000 steps, with --long).  theta from the log's cloud kinetic energy, momentum
-    and mass each step.  1/sqrt(theta) grows linearly at the rate
+    `periods` tau (e = 0.7: 1 tau, 26 000 steps; e = 0.9: 0.5 tau, 35 000
+    steps).  theta from the log's cloud kinetic energy, momentum and mass
+    each case step.  1/sqrt(theta) grows linearly at the rate
     1/(tau sqrt(theta_0)) whatever theta_0 is, so the rate is fitted by
     least squares after the first 10 % of the run (the lattice start is
     not yet the homogeneous state's pair correlation).  Noise: sqrt(1.5/C)
@@ -507,15 +567,18 @@ def test_haff_cooling(e, periods):
     tau = 3*math.sqrt(math.pi)/(2*(1 - e**2)*nreal*sigma*g0)   # theta_0 = 1
     steps = int(periods*tau/dt)
     entries = [(PAIR + "e", e), (PAIR + "mu", 0)]
-    case, wall = run_case(f"haff_e{e}", {"gas": (lattice(n_side, size), (0, 0, 0), 1.0)},
-                          dt, steps, entries, cyclic="xyz", size=size)
+    case, wall = run_case(f"haff_e{e}_{contacts}",
+                          {"gas": (lattice(n_side, size), (0, 0, 0), 1.0)},
+                          dt, steps, entries, cyclic="xyz", size=size,
+                          contacts=contacts, per_step=PER_STEP[contacts])
+    dt_case = dt*PER_STEP[contacts]
     log = os.path.join(case, "log.rarefiedMultiphaseFoam")
     ke = foam.log_values(log, "Linear kinetic energy")[:, 0]
     p = foam.log_values(log, "Linear momentum")
     m = foam.log_values(log, "Current mass in system")[:, 0]
-    contact_steps = foam.log_values(log, "Grain-grain contacts")[:, 0].sum()
+    contact_steps = PER_STEP[contacts]*foam.log_values(log, "Grain-grain contacts")[:, 0].sum()
     C = contact_steps/(tc/dt)
-    t = dt*np.arange(1, len(ke) + 1)
+    t = dt_case*np.arange(1, len(ke) + 1)
     theta = (2*ke/m - np.sum(p**2, axis=1)/m**2)/3
     _, U0, _ = state(case, "0")
     theta0 = float(np.mean(U0.var(axis=0)))
@@ -526,9 +589,9 @@ def test_haff_cooling(e, periods):
     nu_tc = 4*nreal*sigma*g0*math.sqrt(theta0/math.pi)*tc
     tol = 4*math.sqrt(1.5/C) + nu_tc
     err = tau_meas/tau_exp - 1
-    print(f"haff e = {e}: {C:.0f} collisions, {steps} steps, {wall:.0f} s")
+    print(f"haff e = {e} ({contacts}): {C:.0f} collisions, {steps} steps, {wall:.0f} s")
     assert report(
-        f"Haff's law with DEM (e = {e})", abs(err) < tol,
+        f"Haff's law with DEM (e = {e}, {contacts})", abs(err) < tol,
         f"tau = {tau_meas:.5f} s vs classical {tau_exp:.5f} s ({100*err:+.2f} %,"
         f" tol {100*tol:.1f} %: 4 sd of {C:.0f} collisions + nu t_c)")
 
@@ -537,7 +600,9 @@ def test_haff_cooling(e, periods):
 # 6. A settled bed under lunar gravity
 
 
-def test_settled_bed():
+@pytest.mark.parametrize("contacts", [pytest.param("pair", marks=pytest.mark.long),
+                                      "cartesian"])
+def test_settled_bed(contacts):
     """588 grains (mu = 0.2, e = 0.8) fall from a jittered loose lattice
     (alpha 0.34) onto the floor of a box 8 mm wide (periodic in x and z)
     and 16 mm tall under lunar gravity (1.63 m/s^2) and settle.  Measure:
@@ -570,18 +635,19 @@ def test_settled_bed():
     entries = [(PAIR + "kn", k), (PAIR + "kt", k), (WALL + "kn", k), (WALL + "kt", k),
                (PAIR + "e", e), (WALL + "e", e), (PAIR + "mu", mu), (WALL + "mu", mu)]
     steps = int(0.2/dt)
-    case, wall = run_case("bed", {"bed": (xs, (0, 0, 0), 0.01)}, dt, steps, entries,
-                          cyclic="xz", size=size, height=2, gravity=(0, -1.63, 0))
+    case, wall = run_case(f"bed_{contacts}", {"bed": (xs, (0, 0, 0), 0.01)}, dt, steps,
+                          entries, cyclic="xz", size=size, height=2, gravity=(0, -1.63, 0),
+                          contacts=contacts, per_step=PER_STEP[contacts])
     x, U, omega = state(case, final_time(case))
     ke = 0.5*MASS*np.sum(U**2, axis=1).mean()
     top = x[:, 1].max()
     lo, hi = 2*D, top - 2*D
     inside = (x[:, 1] > lo) & (x[:, 1] < hi)
     alpha = inside.sum()*math.pi*D**3/6/((hi - lo)*size*size)
-    print(f"bed: {steps} steps, {wall:.0f} s; top centre {1e3*top:.2f} mm")
-    ok_s = report("bed settled", ke < 1e-3*MASS*1.63*D,
+    print(f"bed ({contacts}): {steps} steps, {wall:.0f} s; top centre {1e3*top:.2f} mm")
+    ok_s = report(f"bed settled ({contacts})", ke < 1e-3*MASS*1.63*D,
                   f"kinetic energy per grain {ke/(MASS*1.63*D):.2e} m g d (tol 1e-3)")
-    ok_a = report("settled bed packing fraction (mu = 0.2)", 0.55 <= alpha <= 0.64,
+    ok_a = report(f"settled bed packing fraction (mu = 0.2, {contacts})", 0.55 <= alpha <= 0.64,
                   f"{alpha:.3f} in [{lo*1e3:.1f}, {hi*1e3:.1f}] mm"
                   " (random packing range 0.55-0.64)")
     assert ok_s and ok_a
@@ -591,7 +657,8 @@ def test_settled_bed():
 # 7. Restart
 
 
-def test_restart_identical():
+@pytest.mark.parametrize("contacts", CONTACTS)
+def test_restart_identical(contacts):
     """The energy test's lattice with e = 0.8, mu = 0.2: 100 steps, a
     restart from there, 100 more steps give the same parcels to the byte
     as 200 uninterrupted steps: positions, velocities, spins and the
@@ -601,11 +668,12 @@ def test_restart_identical():
     dt = tc/50
     grid = (np.arange(8) + 0.5)*(L/8)
     xs = np.array([[a, b, c] for a in grid for b in grid for c in grid])
-    case, _ = run_case("restart_whole", {"lattice": (xs, (0, 0, 0), 1.0)}, dt, 200,
-                       write_every=100)
+    case, _ = run_case(f"restart_whole_{contacts}", {"lattice": (xs, (0, 0, 0), 1.0)},
+                       dt, 200, write_every=100, contacts=contacts,
+                       per_step=PER_STEP[contacts])
     times = foam.times(case)
     last = times[-1]
-    restarted = foam.copy_case(case, os.path.join(BUILD, "restart_split"))
+    restarted = foam.copy_case(case, os.path.join(BUILD, f"restart_split_{contacts}"))
     shutil.rmtree(os.path.join(restarted, last))
     foam.set_entry(restarted, "system/controlDict", "startFrom", "latestTime")
     foam.run_solver(restarted)
@@ -613,9 +681,9 @@ def test_restart_identical():
     b = os.path.join(restarted, last, "lagrangian", "grains")
     names = sorted(os.listdir(a))
     log = os.path.join(case, "log.rarefiedMultiphaseFoam")
-    contacts = foam.log_values(log, "Grain-grain contacts")[-1, 0]
+    n_contacts = foam.log_values(log, "Grain-grain contacts")[-1, 0]
     differ = [n for n in names if not filecmp.cmp(os.path.join(a, n), os.path.join(b, n),
                                                   shallow=False)]
-    assert report("restart (100 + 100 steps against 200)", not differ and len(names) > 10,
+    assert report(f"restart (100 + 100 steps against 200, {contacts})", not differ and len(names) > 10,
                   f"{len(names)} parcel files, differing: {differ or 'none'};"
-                  f" {contacts:.0f} grain-grain contacts at the end")
+                  f" {n_contacts:.0f} grain-grain contacts at the end")

@@ -206,6 +206,10 @@ void Foam::LothCoupling<CloudType>::parcelForcesAndHeat(gasCloud* gas)
     gasState g;
     for (parcelType& p : cloud)
     {
+        if (planes_ && !planes_->gasActs(p.position()))
+        {
+            continue;
+        }
         if (!fromDsmc_)
         {
             // At the parcel's position (a table varies within a cell)
@@ -237,8 +241,18 @@ Foam::LothCoupling<CloudType>::LothCoupling
     prescribed_(nullptr),
     average_(),
     lift_(false),
-    curlU_()
+    curlU_(),
+    planes_(nullptr)
 {
+    typedef ErosionPlanes<typename CloudType::kinematicCloudType> planesType;
+    for (const auto& function : owner.functions())
+    {
+        if (isA<planesType>(function))
+        {
+            planes_ = &refCast<const planesType>(function);
+        }
+    }
+
     readCoeffs
     (
         forceDsmc

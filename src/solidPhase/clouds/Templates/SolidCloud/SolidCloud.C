@@ -25,6 +25,7 @@
 #include "WallModel.H"
 #include "PairLinearSpringDashpot.H"
 #include "WallLinearSpringDashpot.H"
+#include "CartesianContacts.H"
 
 // * * * * * * * * * * * * * * * Input checks  * * * * * * * * * * * * * * * //
 
@@ -265,7 +266,7 @@ const Foam::word& Foam::SolidCloud<CloudType>::checkInput
         {
             "solution", "constantProperties", "subModels", "cloudFunctions",
             "axisymmetric", "radialExtent", "maxRadialWeight", "cloudType",
-            "randomSeed"
+            "randomSeed", "reportInterval"
         }
     );
     rejectMisspelt
@@ -332,6 +333,43 @@ void info(const CollidingCloud<CloudType>& cloud)
         << "    Grain-wall contacts             = " << walls << nl;
 }
 
+
+
+//- The MPPIC layer moves as upstream's
+template<class CloudType, class TrackCloudType>
+bool ownMotion
+(
+    MPPICCloud<CloudType>&,
+    TrackCloudType&,
+    typename TrackCloudType::parcelType::trackingData&
+)
+{
+    return false;
+}
+
+
+//- The colliding layer moves as upstream's, but with cartesianContacts,
+//  whose step it is
+template<class CloudType, class TrackCloudType>
+bool ownMotion
+(
+    CollidingCloud<CloudType>& layer,
+    TrackCloudType& cloud,
+    typename TrackCloudType::parcelType::trackingData& td
+)
+{
+    typedef CartesianContacts<CollidingCloud<CloudType>> contactsType;
+
+    contactsType* contacts = dynamic_cast<contactsType*>(&layer.collision());
+    if (!contacts)
+    {
+        return false;
+    }
+
+    contacts->advance(cloud, td);
+    return true;
+}
+
 } // End namespace solidCloudLayers
 } // End namespace Foam
 
@@ -375,6 +413,13 @@ Foam::SolidCloud<CloudType>::SolidCloud
                 this->particleProperties(), "randomSeed", 0, 0, 2000
             ),
             randomStreams::grainWeighting
+        )
+    ),
+    reportInterval_
+    (
+        inputChecks::getLabelOrDefault
+        (
+            this->particleProperties(), "reportInterval", 1, 1, labelMax
         )
     )
 {
@@ -481,7 +526,10 @@ void Foam::SolidCloud<CloudType>::motion
     typename parcelType::trackingData& td
 )
 {
-    CloudType::motion(cloud, td);
+    if (!solidCloudLayers::ownMotion(*this, cloud, td))
+    {
+        CloudType::motion(cloud, td);
+    }
 
     // Upstream's injection counters are already summed over processors
     const label nIn =
@@ -494,6 +542,12 @@ void Foam::SolidCloud<CloudType>::motion
 template<class CloudType>
 void Foam::SolidCloud<CloudType>::info()
 {
+    const Time& time = this->db().time();
+    if (time.timeIndex() % reportInterval_ && !time.writeTime())
+    {
+        return;
+    }
+
     CloudType::info();
     solidCloudLayers::info(*this);
     account_.info(this->mesh().boundaryMesh());

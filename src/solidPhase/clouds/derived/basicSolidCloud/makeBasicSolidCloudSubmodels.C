@@ -6,7 +6,8 @@
 Description
     Registers, for basicSolidCloud, upstream's kinematic and MPPIC submodels (as
     MPPICFoam's cloud has them) and our own: the zonalGravity force, the
-    NTCHardSphere stochastic collision model and the twoSided packing model.
+    NTCHardSphere stochastic collision model, the twoSided packing model and
+    the erosionPlanes cloud function.
 
 \*---------------------------------------------------------------------------*/
 
@@ -29,6 +30,7 @@ Description
 
 // Ours
 #include "ZonalGravityForce.H"
+#include "ErosionPlanes.H"
 #include "NTCHardSphere.H"
 #include "TwoSided.H"
 
@@ -48,6 +50,7 @@ makeMPPICParcelIsotropyModels(basicSolidCloud);
 makeMPPICParcelPackingModels(basicSolidCloud);
 
 makeParticleForceModelType(ZonalGravityForce, basicSolidCloud);
+makeCloudFunctionObjectType(ErosionPlanes, basicSolidCloud);
 makeStochasticCollisionModelType(NTCHardSphere, basicSolidCloud);
 makePackingModelType(TwoSided, basicSolidCloud);
 

@@ -7,8 +7,9 @@ Description
     Registers the submodels selectable for the DEM grain cloud: upstream's
     kinematic and collision models (those of icoUncoupledKinematicParcelFoam's
     colliding cloud) and our own: the zonalGravity force, the NTCHardSphere
-    stochastic collision model and the linear spring-dashpot pair and wall
-    contacts.
+    stochastic collision model, the linear spring-dashpot pair and wall
+    contacts, the cartesianContacts collision model and the erosionPlanes
+    cloud function.
 
 \*---------------------------------------------------------------------------*/
 
@@ -33,9 +34,11 @@ Description
 
 // Ours
 #include "ZonalGravityForce.H"
+#include "ErosionPlanes.H"
 #include "NTCHardSphere.H"
 #include "PairLinearSpringDashpot.H"
 #include "WallLinearSpringDashpot.H"
+#include "CartesianContacts.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -61,9 +64,11 @@ makeWallModelType(WallSpringSliderDashpot, demCollidingCloud);
 makeWallModelType(WallLocalSpringSliderDashpot, demCollidingCloud);
 
 makeParticleForceModelType(ZonalGravityForce, demSolidCloud);
+makeCloudFunctionObjectType(ErosionPlanes, demSolidCloud);
 makeStochasticCollisionModelType(NTCHardSphere, demSolidCloud);
 makePairModelType(PairLinearSpringDashpot, demCollidingCloud);
 makeWallModelType(WallLinearSpringDashpot, demCollidingCloud);
+makeCollisionModelType(CartesianContacts, demSolidCloud);
 
 
 // ************************************************************************* //

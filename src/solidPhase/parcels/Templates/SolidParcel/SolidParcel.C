@@ -6,6 +6,7 @@
 
 #include "SolidParcel.H"
 #include "processorPolyPatch.H"
+#include "wallPolyPatch.H"
 #include "MPPICParcel.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
@@ -120,6 +121,11 @@ bool Foam::SolidParcel<ParcelType>::move
     const scalar trackTime
 )
 {
+    if (cloud.trackingDisplacement())
+    {
+        return moveAlong(cloud, td, trackTime);
+    }
+
     const point start = this->position();
 
     bool keep = ParcelType::move(cloud, td, trackTime);
@@ -138,6 +144,48 @@ bool Foam::SolidParcel<ParcelType>::move
     }
 
     return keep;
+}
+
+
+template<class ParcelType>
+template<class TrackCloudType>
+bool Foam::SolidParcel<ParcelType>::moveAlong
+(
+    TrackCloudType& cloud,
+    typename ParcelType::trackingData& td,
+    const scalar trackTime
+)
+{
+    td.keepParticle = true;
+    td.switchProcessor = false;
+
+    while (td.keepParticle && !td.switchProcessor && this->stepFraction() < 1)
+    {
+        const scalar f = 1 - this->stepFraction();
+        const vector s(f*trackTime*this->U());
+
+        this->trackToFace(s, f);
+
+        if
+        (
+            this->onBoundaryFace()
+         && isA<wallPolyPatch>(this->mesh().boundaryMesh()[this->patch()])
+        )
+        {
+            const polyPatch& pp = this->mesh().boundaryMesh()[this->patch()];
+            FatalErrorInFunction
+                << "The centre of a grain (d = " << this->d() << " m) reached"
+                << " wall patch " << pp.name() << " at " << this->position()
+                << ": its contact with the wall failed (stiffness kn too low"
+                << " for the load, or the grain too fast for the sub-step)"
+                << exit(FatalError);
+        }
+
+        // An internal face: the next cell; a boundary face: its patch
+        this->hitFace(s, cloud, td);
+    }
+
+    return td.keepParticle;
 }
 
 
