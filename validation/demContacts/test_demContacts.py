@@ -61,9 +61,11 @@ oscillation, solved in closed form:
 
 4. Bad input: k <= 0, e outside (0, 1], mu < 0, an unknown keyword, the U
    keyword not U.gas, axisymmetric true (stopped by the initialiser and
-   the solver alike), deltaT > t_c/5 (by the solver, with grains): a
-   FatalIOError naming the file, the keyword, the value and the valid
-   range.
+   the solver alike), deltaT > t_c/5 (by the solver, with grains); for
+   cartesianContacts stepsPerContact < 5, neighbourSkin outside (0, 1],
+   its contact coefficients, a particle force other than gravity, a
+   decomposed run: a FatalIOError naming the file, the keyword, the value
+   and the valid range.
 """
 
 import filecmp
@@ -505,6 +507,30 @@ def test_bad_input(name, entries, control, expect):
     assert report(f"bad input {name}", found,
                   "FatalIOError naming " + ", ".join(expect) if found
                   else text[-800:])
+
+
+def test_cartesian_decomposed_rejected():
+    """cartesianContacts builds no contacts across processor patches: a
+    decomposed run stops at the start, naming collisionModel and
+    pairCollision."""
+    case = foam.copy_setup(CASE, os.path.join(BUILD, "bad_cartesian_parallel"))
+    c = 0.005
+    write_grains(case, {"a": (np.array([[c, c, c]]), (0, 0, 0), 0)})
+    foam.set_entry(case, PROPS, "subModels/collisionModel", "cartesianContacts")
+    foam.run(case, "blockMesh")
+    foam.run(case, "rarefiedMultiphaseInitialise")
+    foam.run(case, "decomposePar")
+    try:
+        foam.run(case, "rarefiedMultiphaseFoam", np_=2)
+        text = ""
+    except subprocess.CalledProcessError:
+        with open(os.path.join(case, "log.rarefiedMultiphaseFoam")) as f:
+            text = f.read()
+    expect = ["'collisionModel'", "cartesianContacts", "pairCollision in a decomposed run"]
+    found = all(s in text for s in expect) and "FOAM FATAL IO ERROR" in text
+    assert report("bad input: cartesianContacts decomposed", found,
+                  "FatalIOError naming " + ", ".join(expect) if found
+                  else (text[-800:] or "the run did not stop"))
 
 
 def test_time_step_warning():
