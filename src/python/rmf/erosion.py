@@ -170,6 +170,9 @@ def plot(series, output, title=None):
     fig, axes = plt.subplots(2, 2, figsize=(11, 7.5), sharex=True)
     (a, b), (c, e) = axes
     many = len(series) > 1
+    colours = plt.cm.tab20(np.linspace(0, 1, 20))[:max(len(series), 1)]
+    for ax in (a, b, c, e):
+        ax.set_prop_cycle(color=colours)
     for name, s in series.items():
         t = s["time"] - s["time"][0]
         line, = a.plot(t, s["erosionNumber"], label=name)
