@@ -334,7 +334,6 @@ void info(const CollidingCloud<CloudType>& cloud)
 }
 
 
-
 //- The MPPIC layer moves as upstream's
 template<class CloudType, class TrackCloudType>
 bool ownMotion
