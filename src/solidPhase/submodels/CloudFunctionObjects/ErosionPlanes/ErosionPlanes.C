@@ -47,26 +47,16 @@ inline List<scalar> allOf(const List<scalar>& local)
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 template<class CloudType>
-Foam::vector Foam::ErosionPlanes<CloudType>::up() const
+void Foam::ErosionPlanes<CloudType>::setGeometry()
 {
     const vector g(this->owner().g().value());
-    return mag(g) > VSMALL ? -g/mag(g) : vector(0, 1, 0);
-}
+    up_ = mag(g) > VSMALL ? -g/mag(g) : vector(0, 1, 0);
 
-
-template<class CloudType>
-void Foam::ErosionPlanes<CloudType>::domain
-(
-    scalar& floor,
-    scalar& top,
-    scalar& area
-) const
-{
     const fvMesh& mesh = this->owner().mesh();
-    const scalarField h(mesh.points() & up());
-    floor = returnReduce(min(h), minOp<scalar>());
-    top = returnReduce(max(h), maxOp<scalar>());
-    area = gSum(mesh.V())/(top - floor);
+    const scalarField h(mesh.points() & up_);
+    floor_ = returnReduce(min(h), minOp<scalar>());
+    top_ = returnReduce(max(h), maxOp<scalar>());
+    area_ = gSum(mesh.V())/(top_ - floor_);
 }
 
 
@@ -92,14 +82,13 @@ template<class CloudType>
 void Foam::ErosionPlanes<CloudType>::start()
 {
     const CloudType& cloud = this->owner();
-    const vector u(up());
 
     d_ = 0;
     DynamicList<scalar> heights;
     for (const parcelType& p : cloud)
     {
         d_ = max(d_, p.d());
-        heights.append(p.position() & u);
+        heights.append(p.position() & up_);
     }
     reduce(d_, maxOp<scalar>());
 
@@ -115,38 +104,35 @@ void Foam::ErosionPlanes<CloudType>::start()
         );
     }
 
-    scalar floor, top, area;
-    domain(floor, top, area);
-
     label inside = 0;
     for (const scalar h : heights)
     {
-        inside += (h > floor + 2*d_ && h < bedTop0_ - 2*d_);
+        inside += (h > floor_ + 2*d_ && h < bedTop0_ - 2*d_);
     }
     reduce(inside, sumOp<label>());
     packing0_ =
         inside*constant::mathematical::pi*pow3(d_)/6
-       /max(area*(bedTop0_ - floor - 4*d_), VSMALL);
+       /max(area_*(bedTop0_ - floor_ - 4*d_), VSMALL);
     nGrains0_ = returnReduce(cloud.size(), sumOp<label>());
     drop_ = 0;
     started_ = true;
 
-    if (anchoring() <= floor)
+    if (anchoring() <= floor_)
     {
         inputChecks::outOfRange
         (
             dict, "anchoringDepth", anchoringDepth_,
-            "[0, " + name((bedTop0_ - floor)/d_) + ") grain diameters (the"
+            "[0, " + name((bedTop0_ - floor_)/d_) + ") grain diameters (the"
             " anchoring plane below the floor; bed top " + name(bedTop0_)
           + " m)"
         );
     }
-    if (erosion() >= top)
+    if (erosion() >= top_)
     {
         inputChecks::outOfRange
         (
             dict, "erosionHeight", erosionHeight_,
-            "[0, " + name((top - bedTop0_)/d_) + ") grain diameters (the"
+            "[0, " + name((top_ - bedTop0_)/d_) + ") grain diameters (the"
             " erosion plane above the domain; bed top " + name(bedTop0_)
           + " m)"
         );
@@ -205,6 +191,10 @@ Foam::ErosionPlanes<CloudType>::ErosionPlanes
             this->coeffDict(), "topGrains", 20, 1, labelMax
         )
     ),
+    up_(Zero),
+    floor_(0),
+    top_(0),
+    area_(0),
     started_(this->template getModelProperty<bool>("started", false)),
     d_(this->template getModelProperty<scalar>("d")),
     bedTop0_(this->template getModelProperty<scalar>("bedTop0")),
@@ -217,6 +207,7 @@ Foam::ErosionPlanes<CloudType>::ErosionPlanes
     List<labelPair> above;
     this->getModelProperty("above", above);
     above_.insert(above);
+    setGeometry();
 
     inputChecks::rejectUnknown
     (
@@ -252,6 +243,10 @@ Foam::ErosionPlanes<CloudType>::ErosionPlanes
     anchoringDepth_(ep.anchoringDepth_),
     erosionHeight_(ep.erosionHeight_),
     topGrains_(ep.topGrains_),
+    up_(ep.up_),
+    floor_(ep.floor_),
+    top_(ep.top_),
+    area_(ep.area_),
     started_(ep.started_),
     d_(ep.d_),
     bedTop0_(ep.bedTop0_),
@@ -281,7 +276,6 @@ void Foam::ErosionPlanes<CloudType>::postEvolve()
         start();
     }
 
-    const vector u(up());
     const scalar hE = erosion();
 
     HashSet<labelPair, labelPair::Hash<>> aboveNow;
@@ -292,7 +286,7 @@ void Foam::ErosionPlanes<CloudType>::postEvolve()
     bool resolved = true;
     for (const parcelType& p : cloud)
     {
-        const scalar h = p.position() & u;
+        const scalar h = p.position() & up_;
         const labelPair id(p.origProc(), p.origId());
         if (h > hE)
         {
@@ -321,9 +315,7 @@ void Foam::ErosionPlanes<CloudType>::postEvolve()
     // Grains gone left through an open patch, above the plane
     const label erosionNumber = nAbove + nGrains0_ - nGrains;
 
-    scalar floor, top, area;
-    domain(floor, top, area);
-    const scalar bedTop = max(topOf(below), floor);
+    const scalar bedTop = max(topOf(below), floor_);
 
     if (!resolved)
     {
@@ -336,7 +328,7 @@ void Foam::ErosionPlanes<CloudType>::postEvolve()
     (
         drop_,
         erosionNumber*constant::mathematical::pi*pow3(d_)/6
-       /(packing0_*area)
+       /(packing0_*area_)
     );
 
     if (csv_.valid())

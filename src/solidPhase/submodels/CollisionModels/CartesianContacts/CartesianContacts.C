@@ -137,6 +137,8 @@ void Foam::CartesianContacts<CloudType>::gather(CloudType& cloud)
     m_.clear();
     R_.clear();
     I_.clear();
+    dMax_ = 0;
+    mMin_ = GREAT;
 
     for (parcelType& p : cloud)
     {
@@ -149,6 +151,8 @@ void Foam::CartesianContacts<CloudType>::gather(CloudType& cloud)
         m_.append(p.mass());
         R_.append(p.d()/2);
         I_.append(p.momentOfInertia());
+        dMax_ = max(dMax_, p.d());
+        mMin_ = min(mMin_, p.mass());
     }
 
     const label n = parcels_.size();
@@ -221,13 +225,8 @@ void Foam::CartesianContacts<CloudType>::buildPairs()
         return;
     }
 
-    scalar dMax = 0;
-    for (const scalar R : R_)
-    {
-        dMax = max(dMax, 2*R);
-    }
-    const scalar reach = skin_*dMax;
-    const scalar cutoff = dMax + reach;
+    const scalar reach = skin_*dMax_;
+    const scalar cutoff = dMax_ + reach;
 
     const boundBox& bb = this->owner().mesh().bounds();
     const vector span(bb.span());
@@ -471,7 +470,9 @@ Foam::CartesianContacts<CloudType>::CartesianContacts
     gravity_(false),
     period_(Zero),
     walls_(),
-    nSubSteps_(0)
+    nSubSteps_(0),
+    dMax_(0),
+    mMin_(GREAT)
 {
     const dictionary& coeffs = this->coeffDict();
 
@@ -533,7 +534,9 @@ Foam::CartesianContacts<CloudType>::CartesianContacts
     gravity_(cm.gravity_),
     period_(cm.period_),
     walls_(cm.walls_),
-    nSubSteps_(cm.nSubSteps_)
+    nSubSteps_(cm.nSubSteps_),
+    dMax_(cm.dMax_),
+    mMin_(cm.mMin_)
 {}
 
 
@@ -564,17 +567,12 @@ void Foam::CartesianContacts<CloudType>::advance
 
     // Sub-steps from the lightest contact (a pair of the lightest grains,
     // or the lightest grain on a wall)
-    scalar mMin = GREAT;
-    for (const scalar m : m_)
-    {
-        mMin = min(mMin, m);
-    }
     if (n > 0)
     {
         const scalar tc = min
         (
-            grainGrain_.contactTime(mMin/2),
-            walls_.size() ? grainWall_.contactTime(mMin) : GREAT
+            grainGrain_.contactTime(mMin_/2),
+            walls_.size() ? grainWall_.contactTime(mMin_) : GREAT
         );
         // (a case step of exactly k contact steps is k sub-steps)
         const label nSub =
@@ -590,12 +588,7 @@ void Foam::CartesianContacts<CloudType>::advance
     const scalar dt = deltaT/max(nSubSteps_, label(1));
     const vector g(gravity_ ? cloud.g().value() : vector::zero);
 
-    scalar dMax = 0;
-    for (const scalar R : R_)
-    {
-        dMax = max(dMax, 2*R);
-    }
-    const scalar moveLimit2 = sqr(skin_*dMax/2);
+    const scalar moveLimit2 = sqr(skin_*dMax_/2);
 
     const List<point> x0(x_);
     buildPairs();
