@@ -126,6 +126,24 @@ def test_collision_model_name(meshed):
            "NTCHardSphere")
 
 
+def test_collisionless_needs_cartesian_contacts(meshed):
+    """erosionPlanes' collisionless is honoured only by cartesianContacts:
+    with any other collision model (here none, the MPPIC cloud's) it
+    stops the solver rather than being ignored."""
+    case = foam.copy_case(meshed, os.path.join(BUILD, "collisionless"))
+    path = os.path.join(case, PROPS)
+    with open(path) as f:
+        text = f.read()
+    with open(path, "w") as f:
+        f.write(text.replace(
+            "cloudFunctions\n{\n}",
+            "cloudFunctions\n{\n    erosionPlanes\n    {\n        type erosionPlanes;\n"
+            "        startTime 0; anchoringDepth 4; erosionHeight 1;\n"
+            "        collisionless true;\n    }\n}", 1))
+    out = run_failing(case, "rarefiedMultiphaseFoam")
+    expect(out, PROPS, "collisionless", "true", "cartesianContacts")
+
+
 # Initialisation dictionary (initialiser only)
 INIT_CASES = [
     ("alpha0High", "alpha0", "0.6", "(0, alphaPacked = 0.6)", "nParcels"),

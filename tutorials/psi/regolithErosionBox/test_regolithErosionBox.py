@@ -31,6 +31,24 @@ Checks (each able to fail):
   167, 172, 175 with the settle and the plume in one run): pooled about
   each set's mean, REF_SD = 9.1 grains (nine runs, six degrees of
   freedom: a rough spread).
+
+The collisionless variant, reduced (0.1 s of plume from the same settled
+bed, about 20 s more): Berger's collisionless box by our rule (the grains
+the gas has reached stop touching each other; erosionPlanes'
+collisionless, doc/physics.md 7.3).  Checks:
+- The rule: no grain above the erosion plane touches another grain at
+  any step (every such grain has been reached; the grains it could touch,
+  those not reached, lie at least 5 d lower, below the anchoring plane),
+  while at least 100 grains are above it at some step.  With the rule
+  broken the base variant's contacts come back: its grains above the
+  plane touch others at a fractional collision number of about 0.013
+  (README), i.e. a few of some hundred grains at most steps.
+- Berger's delayed onset: the erosion starts later than the base
+  variant's (same bed, same plume), 0.066 s against 0.029 s here.
+(Berger's monolayer jump, the set of reached grains lifted within a few
+ms, is in the README with the full run's figures: over 1-2 ms it rises
+only about 2.3 times as fast as the base variant's start here, too close
+to the base for a bound set from one seed.)
 """
 
 import math
@@ -78,6 +96,8 @@ def test_erosion_box_reduced():
                         f"{packing:.4f} in [{lo:.3f}, {hi:.3f}]")
 
     s = erosion.read(run)
+    np.save(os.path.join(BUILD, "base_erosion.npy"),
+            np.vstack([s["time"], s["erosionNumber"]]))
     vp = math.pi*erosion.D**3/6
     area = erosion.LX*erosion.LZ
     drop = np.maximum.accumulate(s["erosionNumber"]*vp/(packing*area))
@@ -107,3 +127,26 @@ def test_erosion_box_reduced():
                    f"{ne:.0f} vs {REF_NE} (tol 4 sd = {4*REF_SD:.0f});"
                    f" onset {fig['onset']:.4f} s")
     assert ok_top and ok_packing and ok_planes and ok_account and ok_ne
+
+
+def test_erosion_box_collisionless():
+    if not os.path.exists(os.path.join(BUILD, "base_erosion.npy")):
+        test_erosion_box_reduced()
+    subprocess.run(["./Allrun", "-variant", "collisionless", "-plume", "0.1"], cwd=BUILD,
+                   check=True, stdout=subprocess.DEVNULL)
+    s = erosion.read(os.path.join(BUILD, "runs", "collisionless"))
+    above = s["above"]
+    ok_rule = report("collisionless: no reached grain touches another",
+                     np.all(s["colliding"][above > 0] == 0) and above.max() >= 100,
+                     f"grains above the erosion plane touching another: at most"
+                     f" {s['colliding'].max():.0f} (up to {above.max():.0f} grains above)")
+
+    t_base, ne_base = np.load(os.path.join(BUILD, "base_erosion.npy"))
+    # (erosion.figures' onset: the first N_e of at least ONSET grains)
+    onset_base = float(t_base[np.argmax(ne_base >= erosion.ONSET)] - t_base[0])
+    fig = erosion.figures(s)
+    ok_onset = report("collisionless: onset later than with contacts",
+                      fig["onset"] is not None and fig["onset"] > onset_base,
+                      f"{fig['onset']:.4f} s against {onset_base:.4f} s")
+
+    assert ok_rule and ok_onset

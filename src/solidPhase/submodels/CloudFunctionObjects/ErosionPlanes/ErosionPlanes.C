@@ -154,6 +154,10 @@ void Foam::ErosionPlanes<CloudType>::store()
     this->setModelProperty("nGrains0", nGrains0_);
     this->setModelProperty("drop", drop_);
     this->setModelProperty("above", above_.toc());
+    if (collisionless_)
+    {
+        this->setModelProperty("reached", reached_.toc());
+    }
 }
 
 
@@ -191,6 +195,10 @@ Foam::ErosionPlanes<CloudType>::ErosionPlanes
             this->coeffDict(), "topGrains", 20, 1, labelMax
         )
     ),
+    collisionless_
+    (
+        this->coeffDict().template getOrDefault<bool>("collisionless", false)
+    ),
     up_(Zero),
     floor_(0),
     top_(0),
@@ -202,11 +210,15 @@ Foam::ErosionPlanes<CloudType>::ErosionPlanes
     nGrains0_(this->template getModelProperty<label>("nGrains0")),
     drop_(this->template getModelProperty<scalar>("drop")),
     above_(),
+    reached_(),
     csv_()
 {
-    List<labelPair> above;
-    this->getModelProperty("above", above);
-    above_.insert(above);
+    List<labelPair> grains;
+    this->getModelProperty("above", grains);
+    above_.insert(grains);
+    grains.clear();
+    this->getModelProperty("reached", grains);
+    reached_.insert(grains);
     setGeometry();
 
     inputChecks::rejectUnknown
@@ -214,9 +226,26 @@ Foam::ErosionPlanes<CloudType>::ErosionPlanes
         this->coeffDict(),
         {
             "type", "startTime", "anchoringDepth", "erosionHeight",
-            "topGrains"
+            "topGrains", "collisionless"
         }
     );
+
+    const word contacts
+    (
+        owner.subModelProperties().template getOrDefault<word>
+        (
+            "collisionModel", "none"
+        )
+    );
+    if (collisionless_ && contacts != "cartesianContacts")
+    {
+        inputChecks::badValue
+        (
+            this->coeffDict(), "collisionless", "true",
+            "false with collisionModel " + contacts + " (only"
+            " cartesianContacts honours it)"
+        );
+    }
 
     if (Pstream::master())
     {
@@ -243,6 +272,7 @@ Foam::ErosionPlanes<CloudType>::ErosionPlanes
     anchoringDepth_(ep.anchoringDepth_),
     erosionHeight_(ep.erosionHeight_),
     topGrains_(ep.topGrains_),
+    collisionless_(ep.collisionless_),
     up_(ep.up_),
     floor_(ep.floor_),
     top_(ep.top_),
@@ -254,6 +284,7 @@ Foam::ErosionPlanes<CloudType>::ErosionPlanes
     nGrains0_(ep.nGrains0_),
     drop_(ep.drop_),
     above_(ep.above_),
+    reached_(ep.reached_),
     csv_()
 {}
 
@@ -341,6 +372,17 @@ void Foam::ErosionPlanes<CloudType>::postEvolve()
     }
 
     above_.transfer(aboveNow);
+
+    if (collisionless_)
+    {
+        for (const parcelType& p : cloud)
+        {
+            if (gasActs(p.position()))
+            {
+                reached_.insert(labelPair(p.origProc(), p.origId()));
+            }
+        }
+    }
 
     CloudFunctionObject<CloudType>::postEvolve();
 }

@@ -137,8 +137,20 @@ void Foam::CartesianContacts<CloudType>::gather(CloudType& cloud)
     m_.clear();
     R_.clear();
     I_.clear();
+    off_.clear();
     dMax_ = 0;
     mMin_ = GREAT;
+
+    // Berger's collisionless box: erosionPlanes says which grains are out
+    typedef ErosionPlanes<typename CloudType::kinematicCloudType> planesType;
+    const planesType* planes = nullptr;
+    for (const auto& function : cloud.functions())
+    {
+        if (isA<planesType>(function))
+        {
+            planes = &refCast<const planesType>(function);
+        }
+    }
 
     for (parcelType& p : cloud)
     {
@@ -151,6 +163,7 @@ void Foam::CartesianContacts<CloudType>::gather(CloudType& cloud)
         m_.append(p.mass());
         R_.append(p.d()/2);
         I_.append(p.momentOfInertia());
+        off_.append(planes && planes->contactsOff(p));
         dMax_ = max(dMax_, p.d());
         mMin_ = min(mMin_, p.mass());
     }
@@ -301,7 +314,7 @@ void Foam::CartesianContacts<CloudType>::buildPairs()
                     const label b = (cz*nBins.y() + cy)*nBins.x() + cx;
                     for (label j = head[b]; j >= 0; j = next[j])
                     {
-                        if (j <= i) continue;
+                        if (j <= i || (off_[i] && off_[j])) continue;
 
                         const vector d(x_[i] - x_[j]);
                         vector r(d);
