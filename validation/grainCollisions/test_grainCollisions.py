@@ -129,9 +129,10 @@ NREAL = W*N/VBOX            # real number density [1/m^3]
 SIGMA = np.pi*D**2          # cross-section of two equal grains [m^2]
 
 
-def run_case(name, steps, entries=(), init_entries=()):
+def run_case(name, steps, entries=(), init_entries=(), before_solver=None):
     """Run a copy of the granular gas for steps steps, written at the start
-    and the end; returns (case, wall time)."""
+    and the end (before_solver(case): a change to the initialised case);
+    returns (case, wall time)."""
     case = foam.copy_setup(CASE, os.path.join(BUILD, name))
     for entry, value in entries:
         foam.set_entry(case, PROPS, entry, value)
@@ -142,6 +143,8 @@ def run_case(name, steps, entries=(), init_entries=()):
     start = time.time()
     foam.run(case, "blockMesh")
     foam.run(case, "rarefiedMultiphaseInitialise")
+    if before_solver:
+        before_solver(case)
     foam.run(case, "rarefiedMultiphaseFoam")
     wall = time.time() - start
     print(f"\n{name}: {steps} steps, {wall:.1f} s")
@@ -183,19 +186,50 @@ def elastic():
     return case
 
 
-def test_collision_rate(elastic):
-    t, collisions, _, _, _ = log_series(elastic)
-    theta = theta_of(parcels(elastic, "0", "U"))
+def collision_rate(case):
+    """Collisions per parcel and second over the run, kinetic theory's
+    n sigma <c_r> of the initial parcels, the relative error, its
+    tolerance (4 sd of a Poisson count) and the count C."""
+    t, collisions, _, _, _ = log_series(case)
+    theta = theta_of(parcels(case, "0", "U"))
     C = collisions.sum()
     measured = 2*C/(N*t[-1])
     theory = NREAL*SIGMA*4*np.sqrt(theta/np.pi)
-    err = measured/theory - 1
-    tol = 4/np.sqrt(C)          # 4 sd of a Poisson count
+    return measured, theory, measured/theory - 1, 4/np.sqrt(max(C, 1)), C
+
+
+def test_collision_rate(elastic):
+    measured, theory, err, tol, C = collision_rate(elastic)
     assert report(
         "collision rate (e = 1)", abs(err) < tol,
         f"{measured:.2f}/s per parcel vs n sigma <c_r> = {theory:.2f}/s, "
         f"error {100*err:+.2f} % (tolerance {100*tol:.2f} %: 4/sqrt(C), "
         f"C = {C:.0f} collisions)")
+
+
+def test_stale_majorant():
+    """A majorant far below the cell's pairs does not stall the cell: every
+    cell starts with (sigma c_r)_max = 1e-30 m^3/s, read as a restart's
+    sigmaCrMax, and the model raises it to the bound of the step's pairs
+    (doc/physics.md 5.2), so the collision rate over 50 steps is the
+    kinetic theory's, tolerance 4/sqrt(C) as above.  Raised by candidates
+    alone (the model before 2026-12-02), the cells drew 1e-28 candidates
+    per step and never collided."""
+    def stale(case):
+        with open(os.path.join(case, "0", "sigmaCrMax.grains"), "w") as f:
+            f.write("FoamFile { version 2.0; format ascii; class volScalarField;"
+                    " object sigmaCrMax.grains; }\n"
+                    "dimensions [0 3 -1 0 0 0 0];\ninternalField uniform 1e-30;\n"
+                    "boundaryField { \".*\" { type cyclic; } }\n")
+    case, _ = run_case("staleMajorant", 50, before_solver=stale)
+    with open(os.path.join(case, "log.rarefiedMultiphaseFoam")) as f:
+        read = "read sigmaCrMax.grains" in f.read()
+    measured, theory, err, tol, C = collision_rate(case)
+    assert report(
+        "stale majorant raised", read and abs(err) < tol,
+        f"read the planted sigmaCrMax: {read}; {measured:.2f}/s per parcel vs"
+        f" {theory:.2f}/s, error {100*err:+.2f} % (tolerance {100*tol:.2f} %,"
+        f" C = {C:.0f})")
 
 
 def test_elastic_conservation(elastic):

@@ -114,11 +114,11 @@ Foam::label Foam::NTCHardSphere<CloudType>::collideCell
 
     const label N = parcels.size();
 
+    // Never below the bound of this step's pairs: a majorant set while
+    // the cell's grains moved together would otherwise stay too small to
+    // draw the candidates that raise it
     scalar& sigmaCrMax = sigmaCrMax_[celli];
-    if (sigmaCrMax <= 0)
-    {
-        sigmaCrMax = sigmaCrBound(parcels);
-    }
+    sigmaCrMax = max(sigmaCrMax, sigmaCrBound(parcels));
 
     scalar WMax = 0;
     for (const parcelType* p : parcels)
