@@ -4,11 +4,13 @@
 they settle, the erosion series of a run, its figures and plots.
 
     /usr/bin/python3 -m rmf.erosion bed CASE [--seed N]
+    /usr/bin/python3 -m rmf.erosion settled TIMEDIR CASE
     /usr/bin/python3 -m rmf.erosion plot CASE [--png FILE]
     /usr/bin/python3 -m rmf.erosion compare RUN... [--png FILE] [--table FILE]
 
 `bed` writes CASE/constant/bedPositions (800 grains of 1 mm on a loose
-jittered lattice, at rest).  `plot` reads the erosionPlanes series of a
+jittered lattice, at rest); `settled` writes it from the grains of a
+run's time directory (the DEM's settled bed, for the parcel variants).  `plot` reads the erosionPlanes series of a
 run (postProcessing/lagrangian/grains/erosionPlanes/<start>/
 erosionPlanes.csv, the files of a restarted run joined), prints its
 figures and draws the erosion number, the crossings of the erosion plane,
@@ -36,6 +38,8 @@ import os
 
 import numpy as np
 
+from rmf import foam
+
 LX, LZ = 0.010, 0.005       # periodic box of the tutorial [m]
 D = 1e-3                    # grain diameter [m]
 N_GRAINS = 800
@@ -62,13 +66,20 @@ def bed_positions(seed=1, n=N_GRAINS):
     return pts + np.random.default_rng(seed).uniform(-1, 1, pts.shape)*gap
 
 
-def write_bed(case, seed=1):
+def write_bed(case, seed=1, points=None, origin=None):
+    """CASE/constant/bedPositions: the jittered lattice of seed, or the
+    points given (origin: the comment saying where they come from)."""
+    digits = 17                 # a run's positions, to the bit
+    if points is None:
+        points = bed_positions(seed)
+        origin = f"rmf.erosion bed --seed {seed}"
+        digits = 9              # the shipped lattice's
     path = os.path.join(case, "constant", "bedPositions")
     with open(path, "w") as f:
         f.write("FoamFile { version 2.0; format ascii; class vectorField;"
                 " object bedPositions; }\n"
-                f"// rmf.erosion bed --seed {seed}\n{N_GRAINS}\n(\n")
-        f.writelines(f"({p[0]:.9g} {p[1]:.9g} {p[2]:.9g})\n" for p in bed_positions(seed))
+                f"// {origin}\n{len(points)}\n(\n")
+        f.writelines("(" + " ".join(f"{c:.{digits}g}" for c in p) + ")\n" for p in points)
         f.write(")\n")
     return path
 
@@ -214,6 +225,9 @@ def main(argv=None):
     p = sub.add_parser("bed", help="write CASE/constant/bedPositions")
     p.add_argument("case")
     p.add_argument("--seed", type=int, default=1)
+    p = sub.add_parser("settled", help="CASE/constant/bedPositions from TIMEDIR's grains")
+    p.add_argument("timedir")
+    p.add_argument("case")
     p = sub.add_parser("plot", help="figures and plot of one run")
     p.add_argument("case")
     p.add_argument("--png")
@@ -225,6 +239,12 @@ def main(argv=None):
 
     if args.command == "bed":
         print(write_bed(args.case, args.seed))
+        return 0
+    if args.command == "settled":
+        points = foam.read_positions(os.path.join(args.timedir, "lagrangian", "grains",
+                                                  "positions"))
+        print(write_bed(args.case, points=points,
+                        origin=f"rmf.erosion settled {args.timedir}"))
         return 0
     runs = [args.case] if args.command == "plot" else args.runs
     series = {}

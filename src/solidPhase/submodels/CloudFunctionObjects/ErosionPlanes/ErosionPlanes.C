@@ -29,6 +29,18 @@ inline label pairContacts(const void*)
     return -1;
 }
 
+//- Whether the grains' contacts are resolved (a DEM cloud)
+template<class ParcelType>
+constexpr bool resolvesContacts(const CollidingParcel<ParcelType>*)
+{
+    return true;
+}
+
+constexpr bool resolvesContacts(const void*)
+{
+    return false;
+}
+
 
 //- Every processor's values, in processor order, on every processor
 inline List<scalar> allOf(const List<scalar>& local)
@@ -314,7 +326,10 @@ void Foam::ErosionPlanes<CloudType>::postEvolve()
     label nUp = 0;
     label nDown = 0;
     label colliding = 0;
-    bool resolved = true;
+    const bool resolved = erosionPlanesDetail::resolvesContacts
+    (
+        static_cast<const parcelType*>(nullptr)
+    );
     for (const parcelType& p : cloud)
     {
         const scalar h = p.position() & up_;
@@ -323,9 +338,7 @@ void Foam::ErosionPlanes<CloudType>::postEvolve()
         {
             aboveNow.insert(id);
             nUp += !above_.found(id);
-            const label contacts = erosionPlanesDetail::pairContacts(&p);
-            resolved = resolved && contacts >= 0;
-            colliding += (contacts > 0);
+            colliding += (erosionPlanesDetail::pairContacts(&p) > 0);
         }
         else
         {
@@ -341,7 +354,6 @@ void Foam::ErosionPlanes<CloudType>::postEvolve()
     reduce(nDown, sumOp<label>());
     reduce(colliding, sumOp<label>());
     reduce(nGrains, sumOp<label>());
-    reduce(resolved, andOp<bool>());
 
     // Grains gone left through an open patch, above the plane
     const label erosionNumber = nAbove + nGrains0_ - nGrains;
