@@ -1,0 +1,73 @@
+# rarefiedMultiphaseFoam. Copyright (C) 2026 The rarefiedMultiphaseFoam authors
+# SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
+"""The speed-accuracy driver (tradeoff.py): its Pareto front and curve
+error against hand-worked cases, and the erosion box's --quick study
+(0.05 s of plume, one seed; about 2.5 minutes).
+
+Checks of the quick study (each able to fail):
+- the reference against itself: cost 1, every error 0 (the errors are
+  taken against the same seed's reference run);
+- contact resolution: DEM at t_c/20 stays within 10 % of the t_c/50
+  reference in the erosion curve and rate (the binary impact is within
+  0.02 % of the analytic e and t_c at t_c/50, validation/demContacts;
+  at t_c/20 linearContact's leapfrog still gives e within 1 %); measured
+  2026-12-02: 1.5 % and 0.6 %;
+- NTC alone holds no bed: its erosion number at 0.05 s is below 10 % of
+  the DEM's (the bed sinks into itself; the DEM's is 166, NTC's 0).
+"""
+
+import csv
+import os
+import subprocess
+import sys
+
+import numpy as np
+
+from rmf_testing import report
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, HERE)
+
+import tradeoff  # noqa: E402
+
+
+def test_pareto_front():
+    # (cost, error): a, b, c on the front; d beaten by b; e ties c's
+    # cost with a larger error; f has no error (not placed)
+    cost = [1.0, 0.5, 0.1, 0.6, 0.1, 0.05]
+    error = [0.0, 0.1, 0.5, 0.2, 0.7, np.nan]
+    front = tradeoff.pareto_front(cost, error)
+    assert report("Pareto front", front == [2, 1, 0], f"{front} (expected [2, 1, 0])")
+
+
+def test_curve_error():
+    # y = 2t against y_ref = t on [0, 1]: RMS of t over y_ref(1) = 1,
+    # sqrt(mean t^2) on a grid of 1001 points = sqrt(1/3) to 1e-3
+    t = np.linspace(0, 1, 11)
+    grid = np.linspace(0, 1, 1001)
+    e = tradeoff.curve_error(t, 2*t, t, t, grid)
+    assert report("curve error", abs(e - np.sqrt(1/3)) < 1e-3,
+                  f"{e:.5f} vs sqrt(1/3) = {np.sqrt(1/3):.5f}")
+
+
+def test_erosion_box_quick():
+    subprocess.run([sys.executable, os.path.join(HERE, "tradeoff.py"), "erosionBox",
+                    "--quick"], check=True, stdout=subprocess.DEVNULL)
+    with open(os.path.join(tradeoff.OUT, "erosionBox", "tradeoff.csv")) as f:
+        rows = {r["setting"]: r for r in csv.DictReader(f)}
+    names = [n for n, _ in tradeoff.EROSION_SETTINGS]
+    ref = rows["base"]
+    ok_all = report("every setting ran", sorted(rows) == sorted(names),
+                    f"{len(rows)} of {len(names)}")
+    ok_ref = report("reference against itself",
+                    float(ref["cost"]) == 1 and all(float(ref[e]) == 0
+                                                    for e in ("curve", "rate", "fcn")),
+                    f"cost {ref['cost']}, errors {ref['curve']}, {ref['rate']}, {ref['fcn']}")
+    s20 = rows["steps20"]
+    ok_20 = report("DEM at t_c/20 within 10 % of t_c/50",
+                   abs(float(s20["curve"])) < 0.1 and abs(float(s20["rate"])) < 0.1,
+                   f"curve {100*float(s20['curve']):.1f} %, rate {100*float(s20['rate']):.1f} %")
+    ok_ntc = report("NTC alone holds no bed",
+                    float(rows["ntc"]["Ne"]) < 0.1*float(ref["Ne"]),
+                    f"N_e {float(rows['ntc']['Ne']):.0f} against the DEM's {float(ref['Ne']):.0f}")
+    assert ok_all and ok_ref and ok_20 and ok_ntc

@@ -1,0 +1,294 @@
+#!/usr/bin/python3
+# rarefiedMultiphaseFoam. Copyright (C) 2026 The rarefiedMultiphaseFoam authors
+# SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
+"""Speed-accuracy study of a scene (doc/speed-accuracy.md): runs the scene
+over a grid of settings, measures each run's CPU time and observables,
+computes their errors against the scene's reference run, and writes a
+CSV, a Pareto picture (error against cost, the front marked) and a
+markdown report.
+
+    . etc/bashrc && bench/tradeoff/tradeoff.py erosionBox [--quick] [--seeds N] [--doc]
+
+Output in build/bench/tradeoff/<scene>/: tradeoff.csv, tradeoff.png,
+tradeoff.md; --doc also puts the report and the picture
+(doc/speed-accuracy-<scene>.png) into doc/speed-accuracy.md, between the
+scene's markers.  Scenes so far:
+
+erosionBox (tutorials/psi/regolithErosionBox, doc/physics.md 7.3)
+    Reference: DEM with contacts resolved in t_c/50 steps (Berger's
+    setting; the contacts' restitution and duration are within 0.02 % of
+    the analytic ones there, validation/demContacts).  Settings: DEM at
+    t_c/20 and t_c/10, springs 10 and 100 times softer, collisionless DEM,
+    NTC hard spheres, MPPIC, the hybrid.  Each seed is its own settled
+    bed (rmf.erosion bed --seed N), shared by its settings; the errors
+    are taken against the reference of the same seed, and the spread over
+    the seeds is the error bar.  Observables over the plume's T seconds:
+      rate   overall erosion rate N_e(T)/T, relative error;
+      curve  the cumulative erosion N_e(t) against the reference's on a
+             1 ms grid: RMS difference over N_e,ref(T);
+      fcn    the fractional collision number's plateau, relative error
+             (DEM settings only: the parcel models resolve no contacts).
+    Cost: the CPU time of the plume's run (the solver's ExecutionTime),
+    over the reference's; the settle is shared and not counted.
+    Full size: 0.2 s of plume, 3 seeds (about 35 minutes); --quick: 0.05 s
+    of plume, 1 seed (about 4 minutes).
+"""
+
+import argparse
+import csv
+import os
+import re
+import shutil
+import subprocess
+import sys
+import time
+
+import numpy as np
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+PROJECT = os.path.dirname(os.path.dirname(HERE))
+sys.path.insert(0, os.path.join(PROJECT, "src", "python"))
+
+from rmf import erosion  # noqa: E402
+
+OUT = os.path.join(PROJECT, "build", "bench", "tradeoff")
+TARGET = 0.10               # the error target of the recommendation
+
+
+# ---------------------------------------------------------------------------
+# Scene-independent: the Pareto front, the errors, the outputs
+
+def pareto_front(cost, error):
+    """Indices of the settings no other setting beats in both cost and
+    error (ties kept), in order of cost."""
+    cost = np.asarray(cost, float)
+    error = np.asarray(error, float)
+    front = []
+    for i in np.argsort(cost, kind="stable"):
+        dominated = np.any((cost <= cost[i]) & (error <= error[i])
+                           & ((cost < cost[i]) | (error < error[i])))
+        if not dominated and np.isfinite(error[i]):
+            front.append(int(i))
+    return front
+
+
+def curve_error(t, y, t_ref, y_ref, grid):
+    """RMS difference of two curves on a grid, over the reference's final
+    value."""
+    a = np.interp(grid, t, y)
+    b = np.interp(grid, t_ref, y_ref)
+    return float(np.sqrt(np.mean((a - b)**2))/max(abs(y_ref[-1]), 1e-300))
+
+
+def relative_error(x, ref):
+    if x is None or ref is None or ref == 0:
+        return float("nan")
+    return float(x/ref - 1)
+
+
+def write_outputs(scene, rows, errors, main_error, note):
+    """CSV of every run, the Pareto picture of the seeds' means and the
+    markdown report."""
+    out = os.path.join(OUT, scene)
+    keys = list(rows[0].keys())
+    with open(os.path.join(out, "tradeoff.csv"), "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=keys)
+        w.writeheader()
+        w.writerows(rows)
+
+    # Mean and spread over the seeds, per setting
+    names = list(dict.fromkeys(r["setting"] for r in rows))
+    summary = []
+    for name in names:
+        runs = [r for r in rows if r["setting"] == name]
+        entry = {"setting": name, "label": runs[0]["label"], "seeds": len(runs),
+                 "cost": float(np.mean([r["cost"] for r in runs])),
+                 "cpu": float(np.mean([r["cpu"] for r in runs]))}
+        for e in errors:
+            v = np.array([r[e] for r in runs], float)
+            entry[e] = float(np.mean(np.abs(v))) if np.all(np.isfinite(v)) else float("nan")
+            entry[e + "Sd"] = float(np.std(np.abs(v), ddof=1)) if len(v) > 1 and np.all(
+                np.isfinite(v)) else 0.0
+        summary.append(entry)
+
+    cost = [s["cost"] for s in summary]
+    err = [s[main_error] for s in summary]
+    front = pareto_front(cost, err)
+
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, ax = plt.subplots(figsize=(7.5, 5))
+    for i, s in enumerate(summary):
+        if not np.isfinite(s[main_error]):
+            continue
+        ax.errorbar(s["cost"], max(s[main_error], 1e-4), yerr=s[main_error + "Sd"],
+                    fmt="o", color="C3" if i in front else "C0", capsize=3)
+        ax.annotate(s["setting"], (s["cost"], max(s[main_error], 1e-4)),
+                    textcoords="offset points", xytext=(5, 4), fontsize=8)
+    fx = [summary[i]["cost"] for i in front]
+    fy = [max(summary[i][main_error], 1e-4) for i in front]
+    ax.step(fx, fy, where="post", color="C3", lw=1, label="Pareto front")
+    ax.axhline(TARGET, color="grey", ls=":", lw=1, label=f"{100*TARGET:.0f} % error")
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    ax.set_xlabel("CPU time / reference's")
+    ax.set_ylabel(f"{main_error} error (|relative|; reference at 1e-4)")
+    ax.set_title(f"Speed-accuracy: {scene}")
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    png = os.path.join(out, "tradeoff.png")
+    fig.savefig(png, dpi=110)
+    plt.close(fig)
+
+    ok = [s for s in summary if all(np.isfinite(s[e]) and s[e] <= TARGET
+                                    for e in (main_error, "rate"))]
+    best = min(ok, key=lambda s: s["cost"]) if ok else None
+    lines = [f"# Speed-accuracy: {scene}", "", note, "",
+             "| setting | what | seeds | CPU [s] | cost / ref | "
+             + " | ".join(f"{e} error" for e in errors) + " | Pareto |",
+             "|---|---|---|---|---|" + "---|"*len(errors) + "---|"]
+    for i, s in enumerate(summary):
+        cells = []
+        for e in errors:
+            if np.isfinite(s[e]):
+                sd = f" ± {100*s[e + 'Sd']:.1f}" if s["seeds"] > 1 else ""
+                cells.append(f"{100*s[e]:.1f}{sd} %")
+            else:
+                cells.append("–")
+        lines.append(f"| {s['setting']} | {s['label']} | {s['seeds']} | {s['cpu']:.1f} |"
+                     f" {s['cost']:.3f} | " + " | ".join(cells)
+                     + f" | {'yes' if i in front else ''} |")
+    lines += ["", "Cheapest setting within "
+              f"{100*TARGET:.0f} % of the reference in both {main_error} and rate: "
+              + (f"**{best['setting']}** ({best['label']}), at {best['cost']:.3f} of the"
+                 f" reference's CPU time." if best else "none."), ""]
+    with open(os.path.join(out, "tradeoff.md"), "w") as f:
+        f.write("\n".join(lines))
+    print("\n".join(lines))
+    print(os.path.join(out, "tradeoff.csv"))
+    print(png)
+    print(os.path.join(out, "tradeoff.md"))
+    return summary, best
+
+
+# ---------------------------------------------------------------------------
+# Scene: the regolith erosion box
+
+EROSION_SETTINGS = [
+    ("base", "DEM, t_c/50 (reference)"),
+    ("steps20", "DEM, t_c/20"),
+    ("steps10", "DEM, t_c/10"),
+    ("soft10", "DEM, k/10"),
+    ("soft100", "DEM, k/100"),
+    ("collisionless", "DEM, collisionless"),
+    ("ntc", "NTC hard spheres"),
+    ("mppic", "MPPIC"),
+    ("hybrid", "MPPIC + NTC"),
+]
+
+
+def cpu_time(log):
+    with open(log) as f:
+        found = re.findall(r"ExecutionTime = (\S+) s", f.read())
+    return float(found[-1])
+
+
+def erosion_box(quick, seeds):
+    plume = 0.05 if quick else 0.2
+    tutorial = os.path.join(PROJECT, "tutorials", "psi", "regolithErosionBox")
+    out = os.path.join(OUT, "erosionBox")
+    os.makedirs(out, exist_ok=True)
+    grid = np.linspace(0, plume, int(round(plume/1e-3)) + 1)
+    rows = []
+    for seed in range(1, seeds + 1):
+        case = os.path.join(out, f"seed{seed}")
+        if os.path.exists(case):
+            shutil.rmtree(case)
+        shutil.copytree(tutorial, case,
+                        ignore=shutil.ignore_patterns("runs", "__pycache__", "*.py"))
+        if seed != 1:
+            erosion.write_bed(case, seed)
+        series = {}
+        for name, label in EROSION_SETTINGS:
+            start = time.time()
+            subprocess.run(["./Allrun", "-variant", name, "-plume", str(plume)], cwd=case,
+                           check=True, stdout=subprocess.DEVNULL)
+            wall = time.time() - start
+            run = os.path.join(case, "runs", name)
+            s = erosion.read(run)
+            series[name] = s
+            fig = erosion.figures(s)
+            rows.append({"setting": name, "label": label, "seed": seed,
+                         "cpu": cpu_time(os.path.join(run, "log.rarefiedMultiphaseFoam")),
+                         "wall": round(wall, 2), "Ne": float(s["erosionNumber"][-1]),
+                         "rateValue": float(s["erosionNumber"][-1])/plume,
+                         "fcnValue": fig["fcnPlateau"]})
+            print(f"seed {seed} {name}: N_e {rows[-1]['Ne']:.0f}, CPU {rows[-1]['cpu']:.1f} s",
+                  flush=True)
+        ref = next(r for r in rows if r["seed"] == seed and r["setting"] == "base")
+        sr = series["base"]
+        for r in rows:
+            if r["seed"] != seed:
+                continue
+            s = series[r["setting"]]
+            r["cost"] = r["cpu"]/ref["cpu"]
+            r["rate"] = relative_error(r["rateValue"], ref["rateValue"])
+            r["curve"] = curve_error(s["time"] - s["time"][0], s["erosionNumber"],
+                                     sr["time"] - sr["time"][0], sr["erosionNumber"], grid)
+            r["fcn"] = relative_error(r["fcnValue"], ref["fcnValue"])
+
+    refs = np.array([r["rateValue"] for r in rows if r["setting"] == "base"])
+    noise = (f"the reference's rate over the {seeds} seeds: "
+             f"{refs.mean():.0f} ± {refs.std(ddof=1):.0f} grains/s"
+             if seeds > 1 else "one seed: no noise estimate (use --seeds 3)")
+    note = (f"Regolith erosion box, {plume} s of plume, {seeds} seed(s) ({noise}). "
+            "Reference: DEM with contact steps of t_c/50.  Errors: rate = overall "
+            "erosion rate N_e(T)/T; curve = RMS of N_e(t) minus the reference's over "
+            "N_e,ref(T); fcn = fractional collision number's plateau (DEM only).  "
+            "Cost: CPU time of the plume's run over the reference's.")
+    return write_outputs("erosionBox", rows, ["curve", "rate", "fcn"], "curve", note)
+
+
+SCENES = {"erosionBox": erosion_box}
+
+
+def to_doc(scene):
+    """The scene's report and picture into doc/speed-accuracy.md, between
+    <!-- tradeoff:SCENE --> and <!-- /tradeoff:SCENE -->."""
+    doc = os.path.join(PROJECT, "doc")
+    png = f"speed-accuracy-{scene}.png"
+    shutil.copy(os.path.join(OUT, scene, "tradeoff.png"), os.path.join(doc, png))
+    with open(os.path.join(OUT, scene, "tradeoff.md")) as f:
+        body = f.read().split("\n", 2)[2]       # without the report's title
+    path = os.path.join(doc, "speed-accuracy.md")
+    with open(path) as f:
+        text = f.read()
+    begin, end = f"<!-- tradeoff:{scene} -->", f"<!-- /tradeoff:{scene} -->"
+    i, j = text.index(begin) + len(begin), text.index(end)
+    text = text[:i] + f"\n{body.strip()}\n\n![{scene}]({png})\n" + text[j:]
+    with open(path, "w") as f:
+        f.write(text)
+    print(path)
+
+
+def main(argv=None):
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("scene", choices=sorted(SCENES))
+    parser.add_argument("--quick", action="store_true", help="the CI size")
+    parser.add_argument("--seeds", type=int, help="seeds per setting (default 3, quick 1)")
+    parser.add_argument("--doc", action="store_true",
+                        help="write the result into doc/speed-accuracy.md")
+    args = parser.parse_args(argv)
+    seeds = args.seeds or (1 if args.quick else 3)
+    summary, best = SCENES[args.scene](args.quick, seeds)
+    if args.doc:
+        to_doc(args.scene)
+    print(f"bench tradeoff {args.scene}: cheapest within {100*TARGET:.0f} %: "
+          + (f"{best['setting']} at {best['cost']:.3f} of the reference's CPU time"
+             if best else "none"))
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
