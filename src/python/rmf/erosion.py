@@ -10,8 +10,9 @@ they settle, the erosion series of a run, its figures and plots.
 
 `bed` writes CASE/constant/bedPositions (800 grains of 1 mm on a loose
 jittered lattice, at rest); `settled` writes it from the grains of a
-run's time directory (the DEM's settled bed, for the parcel variants).  `plot` reads the erosionPlanes series of a
-run (postProcessing/lagrangian/grains/erosionPlanes/<start>/
+run's time directory (the DEM's settled bed, for the parcel variants).
+`plot` reads the erosionPlanes series of a run
+(postProcessing/lagrangian/grains/erosionPlanes/<start>/
 erosionPlanes.csv, the files of a restarted run joined), prints its
 figures and draws the erosion number, the crossings of the erosion plane,
 the fractional collision number and the planes against the time since
