@@ -223,6 +223,7 @@ Foam::ErosionPlanes<CloudType>::ErosionPlanes
     drop_(this->template getModelProperty<scalar>("drop")),
     above_(),
     reached_(),
+    belowFloor_(false),
     csv_()
 {
     List<labelPair> grains;
@@ -297,6 +298,7 @@ Foam::ErosionPlanes<CloudType>::ErosionPlanes
     drop_(ep.drop_),
     above_(ep.above_),
     reached_(ep.reached_),
+    belowFloor_(ep.belowFloor_),
     csv_()
 {}
 
@@ -373,6 +375,16 @@ void Foam::ErosionPlanes<CloudType>::postEvolve()
         erosionNumber*constant::mathematical::pi*pow3(d_)/6
        /(packing0_*area_)
     );
+
+    if (!belowFloor_ && anchoring() <= floor_)
+    {
+        belowFloor_ = true;
+        WarningInFunction
+            << "erosionPlanes: at t = " << time.value() << " s the anchoring"
+            << " plane (" << anchoring() << " m) is below the floor ("
+            << floor_ << " m): the bed is eroded to the floor, the gas acts"
+            << " on every grain from now on" << endl;
+    }
 
     if (csv_.valid())
     {
