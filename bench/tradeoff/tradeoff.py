@@ -30,8 +30,8 @@ erosionBox (tutorials/psi/regolithErosionBox, doc/physics.md 7.3)
              (DEM settings only: the parcel models resolve no contacts).
     Cost: the CPU time of the plume's run (the solver's ExecutionTime),
     over the reference's; the settle is shared and not counted.
-    Full size: 0.2 s of plume, 3 seeds (about 35 minutes); --quick: 0.05 s
-    of plume, 1 seed (about 4 minutes).
+    Full size: 0.2 s of plume, 3 seeds (15 minutes); --quick: 0.05 s of
+    plume, 1 seed (2.5 minutes).
 """
 
 import argparse

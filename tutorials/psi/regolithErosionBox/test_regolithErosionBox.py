@@ -45,6 +45,7 @@ collisionless, doc/physics.md 7.3).  Checks:
   (README), i.e. a few of some hundred grains at most steps.
 - Berger's delayed onset: the erosion starts later than the base
   variant's (same bed, same plume), 0.066 s against 0.029 s here.
+
 The mppic variant, reduced (0.05 s, a few seconds): the DEM's settled bed
 handed over to MPPIC parcels on the coarser mesh (rmf.erosion settled,
 the positionsFile fill).  Checks: the bed top and packing that
@@ -84,6 +85,28 @@ def widened(lo, hi):
     return lo - (hi - lo), hi + (hi - lo)
 
 
+def solver_log(run):
+    with open(os.path.join(run, "log.rarefiedMultiphaseFoam")) as f:
+        return f.read()
+
+
+def settled_bed(log):
+    """Bed top [m] and packing that erosionPlanes measured at the onset."""
+    m = re.search(r"erosionPlanes: bed top (\S+) m, packing (\S+), (\d+) grains", log)
+    return float(m.group(1)), float(m.group(2))
+
+
+def check_account(name, log, s):
+    """No grain lost away from a patch; the grains present at the end are
+    800 plus those in less those out (the last report's totals)."""
+    n_in, n_out = map(int, re.findall(r"Parcels in / out since start\s*=\s*(\d+) / (\d+)",
+                                      log)[-1])
+    present = int(s["grains"][-1])
+    return report(name, "lost away from patches" not in log
+                  and present == erosion.N_GRAINS + n_in - n_out,
+                  f"{present} grains present, {n_in} in, {n_out} out, none lost")
+
+
 def test_erosion_box_reduced():
     if os.path.exists(BUILD):
         shutil.rmtree(BUILD)
@@ -91,10 +114,8 @@ def test_erosion_box_reduced():
     subprocess.run(["./Allrun", "-variant", "base", "-plume", str(PLUME)], cwd=BUILD,
                    check=True, stdout=subprocess.DEVNULL)
     run = os.path.join(BUILD, "runs", "base")
-    with open(os.path.join(run, "log.rarefiedMultiphaseFoam")) as f:
-        log = f.read()
-    m = re.search(r"erosionPlanes: bed top (\S+) m, packing (\S+), (\d+) grains", log)
-    top, packing = float(m.group(1)), float(m.group(2))
+    log = solver_log(run)
+    top, packing = settled_bed(log)
 
     lo, hi = widened(*LAMMPS_TOP)
     ok_top = report("settled bed top against LAMMPS", lo <= top <= hi,
@@ -119,14 +140,7 @@ def test_erosion_box_reduced():
                        f" {err_a:.1e} d (plane spacing); drop at the end"
                        f" {drop[-1]/erosion.D:.2f} d")
 
-    # "Parcels in / out since start = in / out" of the last report
-    n_in, n_out = map(int, re.findall(r"Parcels in / out since start\s*=\s*(\d+) / (\d+)",
-                                      log)[-1])
-    present = int(s["grains"][-1])
-    ok_account = report("grain account",
-                        "lost away from patches" not in log
-                        and present == erosion.N_GRAINS + n_in - n_out,
-                        f"{present} grains present, {n_in} in, {n_out} out, none lost")
+    ok_account = check_account("grain account", log, s)
 
     fig = erosion.figures(s)
     ne = s["erosionNumber"][-1]
@@ -165,25 +179,13 @@ def test_erosion_box_parcels():
         test_erosion_box_reduced()
     subprocess.run(["./Allrun", "-variant", "mppic", "-plume", "0.05"], cwd=BUILD,
                    check=True, stdout=subprocess.DEVNULL)
-    onset = {}
-    for name in ("base", "mppic"):
-        with open(os.path.join(BUILD, "runs", name, "log.rarefiedMultiphaseFoam")) as f:
-            log = f.read()
-        m = re.search(r"erosionPlanes: bed top (\S+) m, packing (\S+), (\d+) grains", log)
-        onset[name] = float(m.group(1)), float(m.group(2))
-    (top_d, phi_d), (top_m, phi_m) = onset["base"], onset["mppic"]
+    run = os.path.join(BUILD, "runs", "mppic")
+    log = solver_log(run)
+    top_d, phi_d = settled_bed(solver_log(os.path.join(BUILD, "runs", "base")))
+    top_m, phi_m = settled_bed(log)
     ok_bed = report("settled bed handed to MPPIC",
                     abs(top_m - top_d) < 0.05*erosion.D and abs(phi_m - phi_d) < 0.01,
                     f"top {1e3*top_m:.4f} mm vs DEM {1e3*top_d:.4f} mm (tol 0.05 mm),"
                     f" packing {phi_m:.4f} vs {phi_d:.4f} (tol 0.01)")
-    with open(os.path.join(BUILD, "runs", "mppic", "log.rarefiedMultiphaseFoam")) as f:
-        log = f.read()
-    n_in, n_out = map(int, re.findall(r"Parcels in / out since start\s*=\s*(\d+) / (\d+)",
-                                      log)[-1])
-    s = erosion.read(os.path.join(BUILD, "runs", "mppic"))
-    present = int(s["grains"][-1])
-    ok_account = report("grain account (mppic)",
-                        "lost away from patches" not in log
-                        and present == erosion.N_GRAINS + n_in - n_out,
-                        f"{present} grains present, {n_in} in, {n_out} out, none lost")
+    ok_account = check_account("grain account (mppic)", log, erosion.read(run))
     assert ok_bed and ok_account

@@ -244,14 +244,11 @@ Foam::LothCoupling<CloudType>::LothCoupling
     curlU_(),
     planes_(nullptr)
 {
-    typedef ErosionPlanes<typename CloudType::kinematicCloudType> planesType;
-    for (const auto& function : owner.functions())
-    {
-        if (isA<planesType>(function))
-        {
-            planes_ = &refCast<const planesType>(function);
-        }
-    }
+    planes_ =
+        ErosionPlanes<typename CloudType::kinematicCloudType>::find
+        (
+            owner.functions()
+        );
 
     readCoeffs
     (

@@ -142,15 +142,11 @@ void Foam::CartesianContacts<CloudType>::gather(CloudType& cloud)
     mMin_ = GREAT;
 
     // Berger's collisionless box: erosionPlanes says which grains are out
-    typedef ErosionPlanes<typename CloudType::kinematicCloudType> planesType;
-    const planesType* planes = nullptr;
-    for (const auto& function : cloud.functions())
-    {
-        if (isA<planesType>(function))
-        {
-            planes = &refCast<const planesType>(function);
-        }
-    }
+    const auto* planes =
+        ErosionPlanes<typename CloudType::kinematicCloudType>::find
+        (
+            cloud.functions()
+        );
 
     for (parcelType& p : cloud)
     {
