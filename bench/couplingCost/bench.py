@@ -33,8 +33,9 @@ step (N = --steps):
 i.e. r_model is the time the coupling model adds to a step over none
 (which runs the solid phase and the per-step sampling pass of the gas) divided
 by the time of the DSMC step.  Target: the coupling "no
-more than comparable to the DSMC step", ratio <= 1; a ratio above is
-printed as MISSES TARGET.  oneWay's sum is O(simulators x parcels) per
+more than comparable to the DSMC step", ratio <= 1, and oneWay <= 0.5
+at 100 parcels per cell (TARGETS); a ratio above is printed as MISSES
+TARGET.  oneWay's sum is O(simulators x parcels) per
 cell, so its ratio grows with the parcels per cell.  Exit status 0 unless
 a run fails.
 
@@ -66,7 +67,10 @@ MODELS = ["none", "oneWay", "twoWayDirect", "twoWayIndirect", "Loth", "adaptive"
 # <model>Coeffs entries a model needs
 COEFFS = {"Loth": {"gas": "dsmc"}}
 
+# Cost / DSMC step: at most 1 ("no more than comparable to the DSMC step"),
+# oneWay at most 0.5 (the speed issue, at 100 parcels per cell)
 TARGET = 1.0
+TARGETS = {"oneWay": 0.5}
 BOX = os.path.join(foam.PROJECT_DIR, "validation", "freeMolecularCoupling", "box")
 BUILD = os.path.join(foam.PROJECT_DIR, "build", "bench", "couplingCost")
 PROPS = "constant/grainsProperties"
@@ -143,7 +147,7 @@ def main():
     parser.add_argument("--cells", type=int, default=4, help="cells per direction")
     parser.add_argument("--simulators", type=int, default=100, help="per cell")
     parser.add_argument("--parcels", type=int, default=50, help="per cell")
-    parser.add_argument("--steps", type=int, default=200)
+    parser.add_argument("--steps", type=int, default=1000)
     parser.add_argument("--repeat", type=int, default=3)
     parser.add_argument("--models", nargs="+", default=MODELS)
     args = parser.parse_args()
@@ -206,12 +210,13 @@ def report(metric, T, models, args):
         if model == "none":
             continue
         ratio = (T[model] - T["none"])/(N*gas)
-        verdict = " MISSES TARGET" if ratio > TARGET else ""
+        target = TARGETS.get(model, TARGET)
+        verdict = f" MISSES TARGET {target:g}" if ratio > target else ""
         print(f"    {model}: {1e3*(T[model] - T['none'])/N:.3f} ms/step over none, "
               f"ratio to the DSMC step {ratio:.3f}{verdict}")
         summary.append(f"{model} {ratio:.3f}{verdict}")
     print(f"bench couplingCost ({metric}): coupling cost / DSMC step (target <= "
-          f"{TARGET:g}): " + ", ".join(summary)
+          f"{TARGET:g}, oneWay <= {TARGETS['oneWay']:g}): " + ", ".join(summary)
           + f"; none's sampling pass {sampling/gas:.3f}")
 
 
