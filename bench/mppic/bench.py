@@ -280,10 +280,14 @@ def set_mppic(case, cloud_dict, forces, averaging):
     foam.set_entry(case, cloud_dict, "solution/averagingMethod", averaging)
 
 
-def prepare_ours(steps):
-    """Our case, meshed and initialised, with the shared MPPIC set-up."""
+def prepare_ours(steps, parcels=None):
+    """Our case, meshed and initialised, with the shared MPPIC set-up (and
+    parcels parcels in the column instead of the tutorial's, if given)."""
     case = foam.copy_setup(TUTORIAL, os.path.join(BUILD, "ours-init"))
     set_controls(case, steps)
+    if parcels is not None:
+        foam.set_entry(case, "system/grainsInitialiseDict",
+                       "regions/column/nParcels", parcels)
     set_mppic(case, "constant/grainsProperties", OUR_FORCES, "cachedDual")
     foam.run(case, "blockMesh")
     foam.run(case, "rarefiedMultiphaseInitialise")
