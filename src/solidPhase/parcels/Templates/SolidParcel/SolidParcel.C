@@ -126,14 +126,16 @@ bool Foam::SolidParcel<ParcelType>::move
         return moveAlong(cloud, td, trackTime);
     }
 
+    if (!onWedge())
+    {
+        return ParcelType::move(cloud, td, trackTime);
+    }
+
+    // The start point for the radial re-weighting (position() costs a
+    // tet's geometry: only here, not on every Cartesian move)
     const point start = this->position();
 
     bool keep = ParcelType::move(cloud, td, trackTime);
-
-    if (!onWedge())
-    {
-        return keep;
-    }
 
     solidParcelLayers::wedgeCorrection<ParcelType>::drop(*this, td);
 
