@@ -2,7 +2,8 @@
 # SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
 """dustCloudStream, reduced (200 steps, 0.2 ms, written every 100), every
 coupling type of Allrun-types (its `types=` line), each through the case's
-Allrun; a type the solver does not know is skipped.
+Allrun; a type the solver does not know fails (a missing model is a fault,
+not a skip).
 
 Checks (physical, each able to fail):
 - none: every parcel keeps its initial velocity (0) and temperature
@@ -93,8 +94,6 @@ def test_dustCloudStream_reduced(model):
     log = os.path.join(case, "log.rarefiedMultiphaseFoam")
     if proc.returncode != 0:
         text = open(log).read() if os.path.exists(log) else ""
-        if f"Unknown interphaseCoupling type {model}" in text:
-            pytest.skip(f"the solver does not know interphaseCoupling {model}")
         raise AssertionError(proc.stdout + proc.stderr + text[-3000:])
     assert os.path.exists(os.path.join(case, "dustCloudStream.png"))
 
