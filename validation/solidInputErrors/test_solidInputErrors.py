@@ -144,6 +144,16 @@ def test_collisionless_needs_cartesian_contacts(meshed):
     expect(out, PROPS, "collisionless", "true", "cartesianContacts")
 
 
+def test_drag_force_beside_coupling(meshed):
+    """An upstream drag force in particleForces beside an interphase
+    coupling would drag the grains twice: refused, naming both."""
+    case = with_entry(meshed, "dragTwice", PROPS, "subModels/interphaseCoupling",
+                      "oneWay")
+    foam.set_entry(case, PROPS, "subModels/particleForces/sphereDrag", "")
+    out = run_failing(case, "rarefiedMultiphaseFoam")
+    expect(out, PROPS, "particleForces", "sphereDrag", "interphaseCoupling", "oneWay")
+
+
 # Initialisation dictionary (initialiser only)
 INIT_CASES = [
     ("alpha0High", "alpha0", "0.6", "(0, alphaPacked = 0.6)", "nParcels"),

@@ -230,6 +230,39 @@ const Foam::word& Foam::SolidCloud<CloudType>::checkInput
         NTCHardSphere<kinematicType>::checkCoeffs(models);
     }
 
+    // Upstream's drag forces (sphereDrag, ErgunWenYuDrag, ...) act on the
+    // carrier fields, which the coupling also acts through: both would
+    // push the grains with the same gas
+    const word coupling
+    (
+        models.getOrDefault<word>("interphaseCoupling", "none")
+    );
+    if (coupling != "none" && models.isDict("particleForces"))
+    {
+        const dictionary& forces = models.subDict("particleForces");
+        for (const entry& e : forces)
+        {
+            const word& force = e.keyword();
+            const std::string suffix("Drag");
+            if
+            (
+                force.size() >= suffix.size()
+             && force.compare
+                (
+                    force.size() - suffix.size(), suffix.size(), suffix
+                ) == 0
+            )
+            {
+                FatalIOErrorInFunction(forces)
+                    << "particleForces lists " << force
+                    << " while interphaseCoupling is " << coupling
+                    << ": the gas would drag the grains twice.  Remove "
+                    << force << " (the coupling model gives the drag) or set"
+                    << " interphaseCoupling none" << exit(FatalIOError);
+            }
+        }
+    }
+
     const word walls
     (
         modelName<PatchInteractionModel<kinematicType>>
