@@ -248,7 +248,7 @@ def final_time(case):
 
 
 @pytest.mark.parametrize("contacts", CONTACTS)
-@pytest.mark.parametrize("e", [0.8, 0.6, 0.5])
+@pytest.mark.parametrize("e", [0.8, 0.6, 0.5, 1.0])
 def test_binary_normal_impact(e, contacts):
     m_eff = MASS/2
     tc = contact_time(e, m_eff)
@@ -372,7 +372,10 @@ def walton_sticking(u, e, kt=KN, ratio=0.5):
 
 
 @pytest.mark.parametrize("regime,psi,mu", [
-    ("sliding", 3.0, 0.2), ("sliding", 6.0, 0.2), ("sticking", 0.2, 50.0)])
+    ("sliding", 3.0, 0.2), ("sliding", 6.0, 0.2), ("sticking", 0.2, 50.0),
+    # the stability matrix's largest friction: sliding throughout needs
+    # psi > 3.5 mu (1 + e) = 8.8
+    ("sliding", 12.0, 1.4)])
 @pytest.mark.parametrize("contacts", CONTACTS)
 def test_oblique_wall_impact(regime, psi, mu, contacts):
     e = 0.8
