@@ -324,6 +324,61 @@ def test_collision_rate(box):
 
 
 # ---------------------------------------------------------------------------
+# The logged sigma against an independent estimate: an ensemble of seeds
+
+ENSEMBLE_SEEDS = range(11, 19)      # the coupling's randomSeed, 8 runs
+ENSEMBLE_STEPS = 300
+# 99.9 % quantile of chi^2 with 8 degrees of freedom, over 8
+CHI2_8_999 = 26.12/8
+
+
+def test_seed_ensemble():
+    """The conservation checks above trust the sigma the solver logs
+    about its own noise (the running sum S of the squares of what the gas
+    gained).  This test estimates the noise without it: twoWayDirect on
+    the argon box, 300 steps, eight coupling seeds (the gas's seed fixed).
+    Each run's error of the total momentum along x, dP, and of the total
+    energy, dE, is a sum of zero-mean increments whose variance S bounds
+    (header, check 1).  Expected:
+      - unbiased: the ensemble mean of dP within 5 standard errors of
+        zero, the standard error from the ensemble's own spread (sd/sqrt 8);
+      - S is a bound: mean(dP^2)/mean(S) below the 99.9 % quantile of
+        chi^2_8/8 = 3.27 (the ratio is chi^2_8/8 times Var/S <= 1), and
+        the same for the energy.
+    A logged sigma two times too small fails the second check."""
+    m_g = MASS["Ar"]
+    dP, dE, SP, SE = [], [], [], []
+    for seed in ENSEMBLE_SEEDS:
+        case = make_case(f"ensemble_{seed}", "twoWayDirect", {"randomSeed": seed},
+                         steps=ENSEMBLE_STEPS, every=ENSEMBLE_STEPS)
+        log = foam.run(case, "rarefiedMultiphaseFoam")
+        gains = foam.log_values(log, GAIN)
+        assert gains.shape == (ENSEMBLE_STEPS, 8), gains.shape
+        s0, s1 = (state(case, t, m_g) for t in foam.times(case))
+        dP.append(s1["Pg"][0] + s1["Ps"][0] - s0["Pg"][0] - s0["Ps"][0])
+        dE.append(s1["Eg"] + s1["Es"] - s0["Eg"] - s0["Es"])
+        SP.append(gains[:, 4].sum())
+        SE.append(gains[:, 7].sum())
+    dP, dE, SP, SE = map(np.array, (dP, dE, SP, SE))
+    n = len(dP)
+    se_P = dP.std(ddof=1)/math.sqrt(n)
+    se_E = dE.std(ddof=1)/math.sqrt(n)
+    ratio_P = (dP**2).mean()/SP.mean()
+    ratio_E = (dE**2).mean()/SE.mean()
+    ok = report(abs(dP.mean()) <= N_SIGMA*se_P and abs(dE.mean()) <= N_SIGMA*se_E,
+                f"seed ensemble ({n} runs): mean momentum error {dP.mean():+.3e} "
+                f"kg m/s ({dP.mean()/se_P:+.2f} ensemble standard errors), energy "
+                f"{dE.mean():+.3e} J ({dE.mean()/se_E:+.2f}); tolerance {N_SIGMA}")
+    ok &= report(ratio_P < CHI2_8_999 and ratio_E < CHI2_8_999,
+                 f"seed ensemble: mean squared error over the logged variance "
+                 f"{ratio_P:.2f} (momentum), {ratio_E:.2f} (energy), below "
+                 f"{CHI2_8_999:.2f} (99.9 % of chi^2_8/8); ensemble sd over the "
+                 f"logged sigma {dP.std(ddof=1)/math.sqrt(SP.mean()):.2f} and "
+                 f"{dE.std(ddof=1)/math.sqrt(SE.mean()):.2f}")
+    assert ok
+
+
+# ---------------------------------------------------------------------------
 # Bad input
 
 @pytest.fixture(scope="module")
