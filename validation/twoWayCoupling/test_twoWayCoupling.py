@@ -112,7 +112,7 @@ DENSE = 1000
 
 
 def make_case(name, coupling, coeffs=None, n_gas=N_GAS, steps=STEPS, species="Ar",
-              eps=0.0, alpha=1.0, w_s=W_S, every=WRITE_EVERY):
+              eps=0.0, alpha=1.0, w_s=W_S, every=WRITE_EVERY, n_parcels=N_PARCELS):
     """The box with one gas species and the grains above, meshed and
     filled."""
     case = copy_box(os.path.join(BUILD, name), species, n_gas, eps, alpha, coupling)
@@ -126,10 +126,13 @@ def make_case(name, coupling, coeffs=None, n_gas=N_GAS, steps=STEPS, species="Ar
         foam.set_entry(case, PROPS, f"subModels/{coupling}Coeffs", "{}")
     for key, value in (coeffs or {}).items():
         foam.set_entry(case, PROPS, f"subModels/{coupling}Coeffs/{key}", value)
-    foam.set_entry(case, GRAINS, "regions/grain/d", D)
-    foam.set_entry(case, GRAINS, "regions/grain/nParcels", N_PARCELS)
-    foam.set_entry(case, GRAINS, "regions/grain/nParticle", w_s)
-    foam.set_entry(case, GRAINS, "regions/grain/U0", f"({U_P0:g} 0 0)")
+    if n_parcels:
+        foam.set_entry(case, GRAINS, "regions/grain/d", D)
+        foam.set_entry(case, GRAINS, "regions/grain/nParcels", n_parcels)
+        foam.set_entry(case, GRAINS, "regions/grain/nParticle", w_s)
+        foam.set_entry(case, GRAINS, "regions/grain/U0", f"({U_P0:g} 0 0)")
+    else:
+        foam.set_entry(case, GRAINS, "regions", "{}")   # no grain placed
     foam.set_entry(case, CONTROL, "deltaT", DT)
     foam.set_entry(case, CONTROL, "endTime", f"{steps*DT:.6g}")
     foam.set_entry(case, CONTROL, "writeInterval", every)
@@ -321,6 +324,52 @@ def test_collision_rate(box):
     else:
         assert box["counts"][:, 3].max() < 0.01
         assert (box["cycled"] == [0, 1]).all()
+
+
+# ---------------------------------------------------------------------------
+# Zero parcels (the stability matrix's empty cloud)
+
+ZERO_STEPS = 50
+
+
+@pytest.fixture(scope="module")
+def gas_only():
+    """The argon box without grains, ZERO_STEPS steps."""
+    case = make_case("zero_gasOnly", "twoWayDirect", steps=ZERO_STEPS, every=ZERO_STEPS)
+    os.remove(os.path.join(case, PROPS))
+    foam.run(case, "rarefiedMultiphaseFoam")
+    return case
+
+
+@pytest.mark.parametrize("model", ["oneWay", "twoWayDirect", "twoWayIndirect"])
+def test_zero_parcels(gas_only, model):
+    """A grain cloud with no parcels, coupled to the gas.  Expected: the
+    run goes through with 0 parcels at every step, and the gas is the
+    gas-only run's byte for byte at the end (simulators and fields): with
+    no grain a coupling model neither draws from the gas's random stream
+    nor changes a simulator."""
+    case = make_case(f"zero_{model}", model, steps=ZERO_STEPS, every=ZERO_STEPS,
+                     n_parcels=0)
+    log = foam.run(case, "rarefiedMultiphaseFoam")
+    counts = foam.log_values(log, "Current number of parcels")[:, 0]
+    end = foam.latest_time(case)
+    assert end == foam.latest_time(gas_only), (end, foam.times(gas_only))
+    cloud = os.path.join("lagrangian", "dsmc")
+    names = sorted(os.listdir(os.path.join(gas_only, end, cloud)))
+    differing = [n for n in names
+                 if open(os.path.join(case, end, cloud, n), "rb").read()
+                 != open(os.path.join(gas_only, end, cloud, n), "rb").read()]
+    fields = [n for n in os.listdir(os.path.join(gas_only, end))
+              if os.path.isfile(os.path.join(gas_only, end, n))]
+    differing += [n for n in fields
+                  if open(os.path.join(case, end, n), "rb").read()
+                  != open(os.path.join(gas_only, end, n), "rb").read()]
+    ok = report(len(counts) == ZERO_STEPS and not counts.any() and not differing,
+                f"zero parcels, {model}: {len(counts)} steps with "
+                f"{int(counts.max()) if len(counts) else -1} parcels at most; gas files "
+                f"differing from the gas-only run's: {differing or 'none'} "
+                f"(of {len(names)} simulator and {len(fields)} field files)")
+    assert ok
 
 
 # ---------------------------------------------------------------------------
