@@ -217,6 +217,48 @@ def test_heat_flux(species, Tp):
     assert abs(err) < N_SIGMA*sigma/abs(q_theory), f"heat error {err:+.4f} beyond {N_SIGMA} sigma"
 
 
+def test_weight_below_one():
+    """The stability matrix's parcel weight below 1: a parcel of 0.5
+    grains.  The free-molecular force and heat act per grain, so the
+    parcel moves and heats exactly as a parcel of 1 grain (its velocity
+    and temperature files byte-identical after 200 steps in a drifting
+    gas, the grain light enough to change by tens of m/s), while the
+    exchange it gives the cell (couplingForce, couplingHeat) is half
+    (within the 6-digit write precision, 1e-5)."""
+    runs = {}
+    for w in (1, 0.5):
+        case = copy_box(os.path.join(BUILD, f"weight_{w:g}"), "Ar", N_GAS, 0.0, 1.0,
+                        "oneWay")
+        foam.set_entry(case, FILL, "velocity", "(200 0 0)")
+        foam.set_entry(case, PROPS, "constantProperties/rho0", 1.2)
+        foam.set_entry(case, PROPS, "constantProperties/Cp0", 400)
+        foam.set_entry(case, PROPS, "constantProperties/T0", 100)
+        foam.set_entry(case, "system/grainsInitialiseDict", "regions/grain/nParticle", w)
+        foam.set_entry(case, "system/controlDict", "endTime", "2e-3")
+        foam.set_entry(case, "system/controlDict", "writeInterval", 100)
+        foam.run(case, "blockMesh")
+        foam.run(case, "rarefiedMultiphaseInitialise")
+        foam.run(case, "rarefiedMultiphaseFoam")
+        runs[w] = case
+    end = foam.latest_time(runs[1])
+    grains = os.path.join(end, "lagrangian", "grains")
+    same = {name: open(os.path.join(runs[1], grains, name), "rb").read()
+            == open(os.path.join(runs[0.5], grains, name), "rb").read()
+            for name in ("U", "T")}
+    U = foam.read_list(os.path.join(runs[1], grains, "U"))
+    halves = []
+    for name in ("couplingForce", "couplingHeat"):
+        one = foam.read_field(os.path.join(runs[1], end, name + ".grains"), 1)
+        half = foam.read_field(os.path.join(runs[0.5], end, name + ".grains"), 1)
+        halves.append(float(np.max(np.abs(half/one - 0.5))))
+    ok = all(same.values()) and max(halves) < 1e-5
+    print(f"\n{'PASS' if ok else 'FAIL'} parcel weight 0.5 against 1: grain U and T "
+          f"byte-identical {same} (grain U_x {U.ravel()[0]:.3f} m/s after 200 steps); "
+          f"exchange ratio off 0.5 by {halves[0]:.1e} (force), {halves[1]:.1e} "
+          f"(heat), tolerance 1e-5")
+    assert ok
+
+
 # ---------------------------------------------------------------------------
 # 3. Bad input
 
