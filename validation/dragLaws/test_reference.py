@@ -4,6 +4,7 @@
 dragLawsReference.H) is what validation/dragLaws/reference.py makes: a
 changed reference is a reviewed commit, never a silent edit."""
 
+import math
 import os
 import subprocess
 import sys
@@ -41,3 +42,33 @@ def test_integral_matches_closed_form():
           "free-molecular C_D: integral vs closed form, worst rel. diff %.2e"
           " (tol 1e-11)" % worst)
     assert worst < 1e-11
+
+
+# The drag's jump where adaptive switches from Loth to free-molecular
+# (its default KnSwitch: Kn_p = 10), argon (gamma 5/3), T_p = T_g, per
+# speed ratio s: C_D,Loth/C_D,fm - 1 as reference.py (hence Test-dragLaws'
+# C++, which matches its tables) gives it.  Stored to 4 digits: a change
+# of either law moves it, and that is a reviewed commit.
+SWITCH_JUMP = {0.05: -0.0363, 0.2: -0.0331, 0.5: -0.0573, 1.0: -0.1111,
+               2.0: -0.0815, 5.0: -0.0563}
+
+
+def test_adaptive_switch_jump():
+    """The stability matrix's grain Knudsen number across adaptive's
+    switch: the drag is not continuous there.  Loth's rarefied branch
+    lies 3-11 % below the free-molecular sphere drag at Kn_p = 10 (the
+    most at s = 1), so a grain crossing the switch sees its drag jump by
+    that much; doc/speed-accuracy.md states it."""
+    gamma, kn = 5/3, 10.0
+    worst = 0.0
+    rows = []
+    for s, stored in SWITCH_JUMP.items():
+        ma = s/math.sqrt(gamma/2)
+        re = math.sqrt(math.pi*gamma/2)*ma/kn
+        jump = reference.loth_cd(re, ma, gamma, 1.0)/reference.cd_fm_closed(s, 1.0) - 1
+        worst = max(worst, abs(jump - stored))
+        rows.append(f"s {s:g}: {100*jump:+.2f} %")
+    ok = worst < 0.5e-4
+    print("PASS" if ok else "FAIL", "drag jump at Kn_p = 10 (Loth over free-molecular):",
+          ", ".join(rows), f"(stored to 1e-4, worst difference {worst:.1e})")
+    assert ok
