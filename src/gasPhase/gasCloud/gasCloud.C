@@ -7,6 +7,7 @@
 #include "gasCloud.H"
 #include "gasCellAverage.H"
 #include "cellFields.H"
+#include "boundBox.H"
 #include "inputChecks.H"
 #include "keywordChecks.H"
 #include "randomStreams.H"
@@ -571,7 +572,75 @@ void Foam::gasCloud::sampleCells()
     {
         lambda_ = sinceWrite_->lambda();
         writeCellField(mesh(), "gas", "lambda", dimLength, lambda_);
+        reportStepCriteria(sinceWrite_());
         sinceWrite_->reset();
+    }
+}
+
+
+void Foam::gasCloud::reportStepCriteria(const gasCellAverage& average) const
+{
+    using constant::mathematical::pi;
+
+    const scalar dt = mesh().time().deltaTValue();
+    const pointField& points = mesh().points();
+    const Vector<label>& geometric = mesh().geometricD();
+
+    scalar collisionMax = 0;
+    scalar transitMax = 0;
+    label collisionCells = 0;
+    label transitCells = 0;
+    forAll(mesh().cells(), celli)
+    {
+        const scalar lambda = average.lambda(celli);
+        const scalar R = average.R(celli);
+        const scalar T = average.T(celli);
+        if (!(lambda > 0 && R > 0 && T > 0))
+        {
+            continue;       // no gas sampled here
+        }
+
+        const scalar meanSpeed = std::sqrt(8*R*T/pi);
+        const scalar collision = dt*meanSpeed/lambda;
+
+        // Smallest extent of the cell in the directions the gas moves in
+        const boundBox box(points, mesh().cellPoints()[celli], false);
+        scalar h = GREAT;
+        for (direction d = 0; d < vector::nComponents; ++d)
+        {
+            if (geometric[d] == 1)
+            {
+                h = min(h, box.span()[d]);
+            }
+        }
+        const scalar transit =
+            (mag(average.U(celli)) + 2*std::sqrt(2*R*T))*dt/h;
+
+        collisionMax = max(collisionMax, collision);
+        transitMax = max(transitMax, transit);
+        collisionCells += (collision > 1);
+        transitCells += (transit > 1);
+    }
+    reduce(collisionMax, maxOp<scalar>());
+    reduce(transitMax, maxOp<scalar>());
+    reduce(collisionCells, sumOp<label>());
+    reduce(transitCells, sumOp<label>());
+
+    Info<< "Gas step criteria since the last write: deltaT/(mean collision"
+        << " time) largest " << collisionMax << " (" << collisionCells
+        << " cells above 1), cell transit (|U| + 2 c_mp) deltaT/h largest "
+        << transitMax << " (" << transitCells << " cells above 1)" << endl;
+
+    if (collisionCells || transitCells)
+    {
+        WarningInFunction
+            << "deltaT " << dt << " s is too long for the gas in "
+            << collisionCells << " cells (deltaT above the mean collision"
+            << " time, up to " << collisionMax << " times) and "
+            << transitCells << " cells (simulators cross more than the cell"
+            << " in a step, up to " << transitMax << " times): shorten"
+            << " deltaT in system/controlDict, or refine the mesh only"
+            << " where the transit fails" << endl;
     }
 }
 
