@@ -12,7 +12,7 @@ runs that differ only in the number of items, over the difference of the
 numbers:
 
     gas simulators   stock dsmcFoam's freeSpacePeriodic tutorial (5120
-                     cells, N2 + O2 at rest), nEquivalentParticles W and
+                     cells, N2 + O2 drifting at 1950 m/s), nEquivalentParticles W and
                      W/4 (--simulators sets the smaller count);
                      stock dsmcFoam and ours (gas alone) on the same cases
     gas cells        the same case with 2 x 2 x 2 times the cells at the
