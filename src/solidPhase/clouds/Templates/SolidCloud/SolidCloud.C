@@ -243,15 +243,7 @@ const Foam::word& Foam::SolidCloud<CloudType>::checkInput
         for (const entry& e : forces)
         {
             const word& force = e.keyword();
-            const std::string suffix("Drag");
-            if
-            (
-                force.size() >= suffix.size()
-             && force.compare
-                (
-                    force.size() - suffix.size(), suffix.size(), suffix
-                ) == 0
-            )
+            if (force.ends_with("Drag"))
             {
                 FatalIOErrorInFunction(forces)
                     << "particleForces lists " << force
