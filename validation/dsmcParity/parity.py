@@ -119,8 +119,9 @@ def _strip_class(path):
 
 
 # Outputs of ours that dsmcFoam does not have: the gas's mean free path
-# (gasCloud writes it at every write time, gas-only runs included)
-OURS_ONLY = {"lambda.gas"}
+# (gasCloud writes it at every write time, gas-only runs included) and the
+# gas's restart state (doc/physics.md 1.4)
+OURS_ONLY = {"lambda.gas", "gasCloudState"}
 
 
 def _same_but_class(fa, fb, rel):

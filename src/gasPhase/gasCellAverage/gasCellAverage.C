@@ -5,6 +5,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "gasCellAverage.H"
+#include "restartState.H"
 #include "physicoChemicalConstants.H"
 #include "mathematicalConstants.H"
 
@@ -115,6 +116,52 @@ void Foam::gasCellAverage::reset()
     mass_ = Zero;
     momentum_ = Zero;
     twiceKinetic_ = Zero;
+}
+
+
+void Foam::gasCellAverage::writeState(dictionary& state) const
+{
+    state.add("samples", window_.nSamples());
+    forAll(count_, typei)
+    {
+        restartState::put(state, "count" + Foam::name(typei), count_[typei]);
+    }
+    restartState::put(state, "mass", mass_);
+    restartState::put(state, "momentum", momentum_);
+    restartState::put(state, "twiceKinetic", twiceKinetic_);
+}
+
+
+bool Foam::gasCellAverage::readState(const dictionary& state)
+{
+    const label nCells = mass_.size();
+    List<scalarField> count(count_.size());
+    scalarField mass, twiceKinetic;
+    vectorField momentum;
+
+    bool ok = state.found("samples");
+    forAll(count, typei)
+    {
+        ok = ok && restartState::get
+        (
+            state, "count" + Foam::name(typei), nCells, count[typei]
+        );
+    }
+    ok = ok
+     && restartState::get(state, "mass", nCells, mass)
+     && restartState::get(state, "momentum", nCells, momentum)
+     && restartState::get(state, "twiceKinetic", nCells, twiceKinetic);
+    if (!ok)
+    {
+        return false;
+    }
+
+    window_.restore(state.get<label>("samples"));
+    count_.transfer(count);
+    mass_.transfer(mass);
+    momentum_.transfer(momentum);
+    twiceKinetic_.transfer(twiceKinetic);
+    return true;
 }
 
 

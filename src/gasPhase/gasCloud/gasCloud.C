@@ -11,6 +11,7 @@
 #include "inputChecks.H"
 #include "keywordChecks.H"
 #include "randomStreams.H"
+#include "restartState.H"
 #include "polyMeshTetDecomposition.H"
 #include "BinaryCollisionModel.H"
 #include "WallInteractionModel.H"
@@ -234,6 +235,25 @@ void Foam::gasCloud::seedFromCase()
 }
 
 
+void Foam::gasCloud::readState()
+{
+    const dictionary state(restartState::read(mesh(), name(), typeName));
+    restartState::get(state, "random", rndGen());
+
+    scalarList remainder;
+    if
+    (
+        restartState::get
+        (
+            state, "collisionSelectionRemainder", mesh().nCells(), remainder
+        )
+    )
+    {
+        collisionSelectionRemainder() = remainder;
+    }
+}
+
+
 Foam::IOdictionary Foam::gasCloud::emptied(const IOdictionary& initialiseDict)
 {
     IOobject io(initialiseDict);
@@ -433,9 +453,11 @@ Foam::gasCloud::gasCloud(const word& cloudName, const fvMesh& mesh)
             "randomEntryTime",
             axisymmetric_.active()
         )
-    )
+    ),
+    writeState_(true)
 {
     seedFromCase();
+    readState();
     setWeighting();
 }
 
@@ -450,7 +472,8 @@ Foam::gasCloud::gasCloud
     gasCloudInputCheck(cloudName, mesh, initialiseDict),
     DSMCCloud<gasParcel>(cloudName, mesh, emptied(initialiseDict)),
     account_("Simulators", mesh.boundaryMesh(), 0),
-    randomEntryTime_(false)     // the fill moves nothing
+    randomEntryTime_(false),    // the fill moves nothing
+    writeState_(false)
 {
     setWeighting();
     fill(initialiseDict);
@@ -650,6 +673,28 @@ void Foam::gasCloud::info() const
     DSMCCloud<gasParcel>::info();
 
     account_.info(mesh().boundaryMesh());
+}
+
+
+void Foam::gasCloud::writeFields() const
+{
+    DSMCCloud<gasParcel>::writeFields();
+    if (!writeState_)
+    {
+        return;
+    }
+
+    // Upstream's accessors of the stream and the remainders are non-const
+    gasCloud& cloud = const_cast<gasCloud&>(*this);
+    dictionary state;
+    restartState::put(state, "random", cloud.rndGen());
+    restartState::put
+    (
+        state,
+        "collisionSelectionRemainder",
+        cloud.collisionSelectionRemainder()
+    );
+    restartState::write(mesh(), name(), typeName, state);
 }
 
 

@@ -18,7 +18,7 @@ Foam::InterphaseCouplingModel<CloudType>::InterphaseCouplingModel
     CloudSubModelBase<CloudType>(owner),
     momentum_(),
     energy_(),
-    lastWriteTime_(owner.db().time().value()),
+    interval_(0),
     gas_(nullptr)
 {}
 
@@ -41,7 +41,7 @@ Foam::InterphaseCouplingModel<CloudType>::InterphaseCouplingModel
     ),
     momentum_(owner.mesh().nCells(), Zero),
     energy_(owner.mesh().nCells(), Zero),
-    lastWriteTime_(owner.db().time().value()),
+    interval_(0),
     gas_(nullptr)
 {}
 
@@ -52,13 +52,11 @@ template<class CloudType>
 void Foam::InterphaseCouplingModel<CloudType>::writeExchange()
 {
     const fvMesh& mesh = this->owner().mesh();
-    const Time& time = mesh.time();
 
     // Per volume and per time since the last write
-    const scalar interval = time.value() - lastWriteTime_;
     const scalarField perVolTime
     (
-        1/(mesh.V().field()*max(interval, VSMALL))
+        1/(mesh.V().field()*max(interval_, VSMALL))
     );
 
     const word& cloud = this->owner().name();
@@ -75,7 +73,7 @@ void Foam::InterphaseCouplingModel<CloudType>::writeExchange()
 
     momentum_ = Zero;
     energy_ = Zero;
-    lastWriteTime_ = time.value();
+    interval_ = 0;
 }
 
 
@@ -139,6 +137,7 @@ void Foam::InterphaseCouplingModel<CloudType>::coupleParcels(gasCloud* gas)
     if (active())
     {
         parcelForcesAndHeat(gas);
+        interval_ += this->owner().db().time().deltaTValue();
 
         if (writing)
         {

@@ -5,6 +5,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "LothCoupling.H"
+#include "restartState.H"
 #include "gasCloud.H"
 #include "dragLaws.H"
 #include "inputChecks.H"
@@ -95,8 +96,20 @@ void Foam::LothCoupling<CloudType>::updateGas(gasCloud* gas)
         if (!average_.valid())
         {
             average_.reset(new gasCellAverage(*gas, averagingSteps_));
+            average_->readState(restart_);
+            restart_.clear();
         }
         average_->add(this->gasNow());
+
+        if (this->owner().db().time().writeTime())
+        {
+            dictionary state;
+            average_->writeState(state);
+            restartState::write
+            (
+                this->owner().mesh(), this->owner().name(), stateName, state
+            );
+        }
     }
     if (fromDsmc_ && lift_)
     {
@@ -242,7 +255,8 @@ Foam::LothCoupling<CloudType>::LothCoupling
     average_(),
     lift_(false),
     curlU_(),
-    planes_(nullptr)
+    planes_(nullptr),
+    restart_(restartState::read(owner.mesh(), owner.name(), stateName))
 {
     planes_ =
         ErosionPlanes<typename CloudType::kinematicCloudType>::find

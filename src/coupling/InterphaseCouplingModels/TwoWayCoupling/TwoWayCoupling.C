@@ -9,6 +9,7 @@
 #include "inputChecks.H"
 #include "keywordChecks.H"
 #include "randomStreams.H"
+#include "restartState.H"
 #include "ntcSelection.H"
 #include "mathematicalConstants.H"
 #include "physicoChemicalConstants.H"
@@ -414,7 +415,17 @@ Foam::TwoWayCoupling<CloudType>::TwoWayCoupling
     mass_(),
     zeta_(),
     partners_(owner.mesh().nCells())
-{}
+{
+    const label nCells = owner.mesh().nCells();
+    const dictionary state
+    (
+        restartState::read(owner.mesh(), owner.name(), stateName())
+    );
+    restartState::get(state, "random", rnd_);
+    restartState::get(state, "sigmaCrMax", nCells, sigmaCrMax_);
+    restartState::get(state, "remainder", nCells, remainder_);
+    state.readIfPresent("nCollisionsTotal", nCollisionsTotal_);
+}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
@@ -462,6 +473,20 @@ void Foam::TwoWayCoupling<CloudType>::coupleGas(gasCloud& gas)
         << "    Gas gain from grains: momentum, energy, sums of squares = "
         << gained_.momentum << ' ' << gained_.energy << ' '
         << gained_.momentumSqr << ' ' << gained_.energySqr << nl;
+
+    if (this->owner().db().time().writeTime())
+    {
+        dictionary state;
+        restartState::put(state, "random", rnd_);
+        restartState::put(state, "sigmaCrMax", sigmaCrMax_);
+        restartState::put(state, "remainder", remainder_);
+        restartState::put(state, "nCollisionsTotal", nCollisionsTotal_);
+        writeState(state);
+        restartState::write
+        (
+            this->owner().mesh(), this->owner().name(), stateName(), state
+        );
+    }
 }
 
 

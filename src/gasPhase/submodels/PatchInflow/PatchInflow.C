@@ -8,6 +8,7 @@
 #include "inputChecks.H"
 #include "keywordChecks.H"
 #include "coordinateTable.H"
+#include "restartState.H"
 #include "polyMeshTetDecomposition.H"
 #include "physicoChemicalConstants.H"
 #include "mathematicalConstants.H"
@@ -316,6 +317,30 @@ Foam::PatchInflow<CloudType>::PatchInflow
             "at least one patch subdictionary"
         );
     }
+
+    // The carried fractions of a restart
+    const dictionary state
+    (
+        restartState::read(cloud.mesh(), cloud.name(), typeName)
+    );
+    const polyBoundaryMesh& bm = cloud.mesh().boundaryMesh();
+    for (inflowPatch& ip : patches_)
+    {
+        const dictionary* dictPtr = state.findDict(bm[ip.patchi].name());
+        if (!dictPtr)
+        {
+            continue;
+        }
+        forAll(ip.carry, si)
+        {
+            restartState::get
+            (
+                *dictPtr, "carry" + Foam::name(si), ip.carry[si].size(),
+                ip.carry[si]
+            );
+        }
+        dictPtr->readIfPresent("inserted", ip.inserted);
+    }
 }
 
 
@@ -338,6 +363,25 @@ void Foam::PatchInflow<CloudType>::inflow()
 
         Info<< "    Simulators inserted through " << bm[ip.patchi].name()
             << " = " << step << " / " << ip.inserted << endl;
+    }
+
+    if (this->owner().mesh().time().writeTime())
+    {
+        dictionary state;
+        for (const inflowPatch& ip : patches_)
+        {
+            dictionary patch;
+            forAll(ip.carry, si)
+            {
+                restartState::put(patch, "carry" + Foam::name(si), ip.carry[si]);
+            }
+            patch.add("inserted", ip.inserted);
+            state.add(bm[ip.patchi].name(), patch);
+        }
+        restartState::write
+        (
+            this->owner().mesh(), this->owner().name(), typeName, state
+        );
     }
 }
 

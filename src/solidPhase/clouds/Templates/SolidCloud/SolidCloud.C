@@ -7,6 +7,7 @@
 #include "SolidCloud.H"
 #include "inputChecks.H"
 #include "randomStreams.H"
+#include "restartState.H"
 #include "cellFields.H"
 #include "PackingModel.H"
 #include "DampingModel.H"
@@ -479,6 +480,10 @@ Foam::SolidCloud<CloudType>::SolidCloud
     {
         account_.countWeighting();
     }
+
+    const dictionary state(restartState::read(mesh, cloudName, "solidCloud"));
+    restartState::get(state, "random", this->rndGen());
+    restartState::get(state, "weighting", rnd_);
 }
 
 
@@ -607,6 +612,11 @@ void Foam::SolidCloud<CloudType>::writeFields() const
     writeCellField(mesh, cloud, "nParcels", dimless, nParcels);
     writeCellField(mesh, cloud, "U", dimVelocity, vectorField(momentum/massOrOne));
     writeCellField(mesh, cloud, "T", dimTemperature, scalarField(heat/massOrOne));
+
+    dictionary state;
+    restartState::put(state, "random", this->rndGen());
+    restartState::put(state, "weighting", rnd_);
+    restartState::write(mesh, cloud, "solidCloud", state);
 }
 
 

@@ -10,6 +10,7 @@
 #include "cellFields.H"
 #include "wallPolyPatch.H"
 #include "syncTools.H"
+#include "restartState.H"
 
 // * * * * * * * * * * * * * * * Input checks  * * * * * * * * * * * * * * * //
 
@@ -161,7 +162,8 @@ Foam::PackingModels::TwoSided<CloudType>::TwoSided
     uEnd_(nullptr),
     uCell_(),
     uNbr_(),
-    started_(false)
+    started_(false),
+    restart_(restartState::read(owner.mesh(), owner.name(), typeName))
 {
     checkCoeffs(dict);
     findNeighbours();
@@ -240,6 +242,25 @@ void Foam::PackingModels::TwoSided<CloudType>::cacheFields(const bool store)
         {
             uStart_ = newAverage<vector>("twoSidedStartVelocity");
             uEnd_ = newAverage<vector>("twoSidedEndVelocity");
+
+            // u_m of a restart: every part of the average (dual: the
+            // cells' and the points')
+            AveragingMethod<vector>& u = uStart_();
+            started_ = restart_.size();
+            forAll(u, i)
+            {
+                List<vector> values;
+                const word key("uMean" + Foam::name(i));
+                if (restartState::get(restart_, key, u[i].size(), values))
+                {
+                    u[i] = values;
+                }
+                else
+                {
+                    started_ = false;
+                }
+            }
+            restart_.clear();
         }
         uEnd_() = Zero;
 
@@ -263,6 +284,17 @@ void Foam::PackingModels::TwoSided<CloudType>::cacheFields(const bool store)
         uEnd_->average(*massAverage_);
         uStart_() = uEnd_();
         started_ = true;
+
+        if (mesh.time().writeTime())
+        {
+            dictionary state;
+            const AveragingMethod<vector>& u = uStart_();
+            forAll(u, i)
+            {
+                restartState::put(state, "uMean" + Foam::name(i), u[i]);
+            }
+            restartState::write(mesh, cloudName, typeName, state);
+        }
 
         volumeAverage_ = nullptr;
         massAverage_ = nullptr;

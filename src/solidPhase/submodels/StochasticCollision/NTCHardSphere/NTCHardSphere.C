@@ -8,6 +8,7 @@
 #include "keywordChecks.H"
 #include "inputChecks.H"
 #include "randomStreams.H"
+#include "restartState.H"
 #include "ntcSelection.H"
 #include "parcelsByCell.H"
 #include "volFields.H"
@@ -209,6 +210,11 @@ void Foam::NTCHardSphere<CloudType>::writeFields(const scalarField& alpha)
     nCandidates_ = 0;
     nCollisions_ = 0;
 
+    dictionary state;
+    restartState::put(state, "random", rnd_);
+    restartState::put(state, "remainder", remainder_);
+    restartState::write(mesh, cloud, typeName, state);
+
     // Validity of binary collisions
     label nAbove = 0;
     label nAboveColliding = 0;
@@ -372,6 +378,12 @@ Foam::NTCHardSphere<CloudType>::NTCHardSphere
         sigmaCrMax_ = volScalarField(io, mesh).primitiveField();
         Info<< "    " << typeName << ": read " << io.name() << nl;
     }
+    const dictionary state
+    (
+        restartState::read(mesh, owner.name(), typeName)
+    );
+    restartState::get(state, "random", rnd_);
+    restartState::get(state, "remainder", mesh.nCells(), remainder_);
 
     Info<< "    " << typeName << ": e = " << e_ << ", alphaValid = "
         << alphaValid_;

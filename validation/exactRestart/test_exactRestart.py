@@ -1,0 +1,246 @@
+# rarefiedMultiphaseFoam. Copyright (C) 2026 The rarefiedMultiphaseFoam authors
+# SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
+"""Exact restart (issue 18 item 1): N steps, a restart from the written
+state, N more steps is byte for byte the run of 2N steps without a stop.
+
+Per model family, a small case is meshed and initialised once, then run
+twice from the same initial state with writeFormat binary, a write every
+N steps and startFrom latestTime:
+- whole: to 2N steps in one run;
+- split: to N steps, stopped, and run again to 2N.
+Every file of the last time directory (fields, parcels, uniform/: time,
+cloud properties, every model's restart state) must be identical in the
+two runs: a random draw, a remainder or a mean the restart did not carry
+changes the parcels in the last bits at least.  The restart state is
+what doc/physics.md 1.4 lists.  On 2 ranks (decomposed once)
+each processor directory is compared.
+
+The runs are short (N = 5 or 10 steps): any state not carried shows at
+the first step after the restart.  Control, so that the comparison can
+fail: the same restart with the restart-state files (<owner>State)
+deleted must differ from the whole run, for every family but DEM, whose
+state between steps (velocities, angular momenta, contact springs) is
+in the parcels' own fields.
+"""
+
+import glob
+import os
+import re
+import shutil
+import sys
+
+import numpy as np
+import pytest
+
+from rmf import foam
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = foam.PROJECT_DIR
+BUILD = os.path.join(ROOT, "build", "validation", "exactRestart")
+CONTROL = "system/controlDict"
+GRAINS = "constant/grainsProperties"
+SNIDER = os.path.join(ROOT, "tutorials", "solids", "sniderSedimentation")
+DUST = os.path.join(ROOT, "tutorials", "coupling", "dustCloudStream")
+GAS_WEDGE = os.path.join(ROOT, "validation", "axisymmetricGas", "wedge")
+GRAIN_WEDGE = os.path.join(ROOT, "validation", "axisymmetricGrains", "wedge")
+GRANULAR = os.path.join(ROOT, "validation", "grainCollisions", "granularGas")
+DEM_BOX = os.path.join(ROOT, "validation", "demContacts", "box")
+
+
+def _set(case, entries):
+    for path, entry, value in entries:
+        foam.set_entry(case, path, entry, value)
+
+
+def _mesh_and_fill(case, np_=1):
+    foam.set_entry(case, CONTROL, "writeFormat", "binary")
+    foam.set_entry(case, CONTROL, "functions", "{}")
+    foam.run(case, "blockMesh")
+    foam.run(case, "rarefiedMultiphaseInitialise")
+    if np_ > 1:
+        with open(os.path.join(case, "system", "decomposeParDict"), "w") as f:
+            f.write("FoamFile { version 2.0; format ascii; class dictionary;"
+                    f" object decomposeParDict; }}\nnumberOfSubdomains {np_};\n"
+                    "method metis;\n")
+        foam.run(case, "decomposePar")
+    return case
+
+
+# Model families: name -> (make the case in dst, steps N)
+
+def gas(dst, np_):
+    """Gas alone: dsmcFoam's freeSpacePeriodic, own stream (randomSeed)."""
+    case = foam.copy_case(foam.dsmc_tutorial("freeSpacePeriodic"), dst)
+    foam.set_entry(case, "constant/dsmcProperties", "randomSeed", 1)
+    return _mesh_and_fill(case, np_)
+
+
+def snider(dst, np_, hybrid=False):
+    """Grains, MPPIC: the Snider tutorial's models (twoSided packing,
+    relaxation damping, cachedDual) but isotropy none, 20 000 parcels
+    (every model acts on every parcel each step).  Upstream's stochastic
+    isotropy keeps the second of its Gaussian pair in function-static
+    variables, not in the cloud's stream: every run starts with a cached
+    sample of 0, so a restart draws differently (doc/physics.md 1.4)."""
+    case = foam.copy_setup(SNIDER, dst)
+    _set(case, [("system/grainsInitialiseDict", "regions/column/nParcels", 20000),
+                (GRAINS, "subModels/isotropyModel", "none")])
+    if hybrid:
+        _set(case, [(GRAINS, "subModels/stochasticCollisionModel", "NTCHardSphere"),
+                    (GRAINS, "subModels/NTCHardSphereCoeffs/alphaSwitch", 0.1),
+                    (GRAINS, "subModels/NTCHardSphereCoeffs/randomSeed", 2)])
+    return _mesh_and_fill(case, np_)
+
+
+def ntc(dst, np_):
+    """Grains, NTC hard spheres alone: the homogeneous cooling box."""
+    case = foam.copy_setup(GRANULAR, dst)
+    return _mesh_and_fill(case, np_)
+
+
+def dem(dst, np_):
+    """Grains, soft-sphere DEM (pairCollision, contact springs in the
+    parcels' collision records): 200 grains in a box of 1 cm under
+    gravity, random velocities of 0.1 m/s, so that contacts last across
+    the restart."""
+    sys.path.insert(0, os.path.join(ROOT, "validation", "demContacts"))
+    import test_demContacts as box
+    case = foam.copy_setup(DEM_BOX, dst)
+    rng = np.random.default_rng(3)
+    side = box.L
+    n = 6
+    grid = (np.arange(n) + 0.5)*side/n
+    xs = np.array([(x, y, z) for x in grid for y in grid[:3] for z in grid])
+    xs = xs + rng.uniform(-0.2, 0.2, xs.shape)*box.D
+    box.write_grains(case, {"grains": (xs, (0, 0, 0), 0.1)}, seed=4)
+    dt = box.contact_time(0.8, box.MASS/2)/20
+    _set(case, [(CONTROL, "deltaT", f"{dt:.17g}")])
+    return _mesh_and_fill(case, np_)
+
+
+def coupled(dst, np_, coupling):
+    """Gas and grains: the dustCloudStream tutorial with one
+    interphaseCoupling type (FreeStream inflow replaced by PatchInflow,
+    whose carried fractions are written; upstream's FreeStream restarts
+    them at zero)."""
+    case = foam.copy_setup(DUST, dst)
+    with open(os.path.join(case, "constant", "couplingType"), "w") as f:
+        f.write(f"interphaseCoupling {coupling};\n")
+    _patch_inflow(case)
+    _set(case, [("constant/dsmcProperties", "randomSeed", 1)])
+    return _mesh_and_fill(case, np_)
+
+
+def _patch_inflow(case):
+    """FreeStream -> PatchInflow with the same state at both open patches
+    (argon, 1e21 m^-3, the tutorial's boundaryT and boundaryU)."""
+    def inflow_value(field):
+        text = foam.dict_text(os.path.join(case, "0", field))
+        return re.search(r'"\(inlet\|outlet\)"\s*\{[^}]*value\s+uniform\s+([^;]+);',
+                         text).group(1)
+    state = (f"composition {{ Ar 1; }} n 1e21; T {inflow_value('boundaryT')};"
+             f" U {inflow_value('boundaryU')};")
+    props = "constant/dsmcProperties"
+    foam.set_entry(case, props, "InflowBoundaryModel", "PatchInflow")
+    foam.set_entry(case, props, "PatchInflowCoeffs",
+                   f"{{ inlet {{ {state} }} outlet {{ {state} }} }}")
+
+
+def wedge(dst, np_):
+    """Axisymmetric, radially weighted gas (maxRadialWeight 10) and grains
+    (weighted parcels, their clone/delete stream), two-way direct coupling:
+    the argon wedge of validation/axisymmetricGas at rest inside a wall,
+    with the grains of validation/axisymmetricGrains."""
+    case = foam.copy_setup(GAS_WEDGE, dst)
+    for sub in (GRAINS, "constant/g", "system/grainsInitialiseDict"):
+        shutil.copy(os.path.join(GRAIN_WEDGE, sub), os.path.join(case, sub))
+    foam.run(case, "foamDictionary", "-entry", "subModels/interphaseCoupling", "-add",
+             "twoWayDirect", GRAINS, log="log.foamDictionary")
+    _set(case, [("constant/dsmcProperties", "randomSeed", 1),
+                ("system/grainsInitialiseDict", "regions/cloud/d", 1e-5),
+                ("system/grainsInitialiseDict", "regions/cloud/alpha0", 1e-6),
+                ("system/grainsInitialiseDict", "regions/cloud/nParcels", 2000)])
+    return _mesh_and_fill(case, np_)
+
+
+FAMILIES = {
+    "gas": (gas, 10),
+    "mppic": (snider, 5),
+    "hybrid": (lambda d, n: snider(d, n, hybrid=True), 5),
+    "ntc": (ntc, 5),
+    "dem": (dem, 10),
+    "oneWay": (lambda d, n: coupled(d, n, "oneWay"), 5),
+    "twoWayDirect": (lambda d, n: coupled(d, n, "twoWayDirect"), 5),
+    "twoWayIndirect": (lambda d, n: coupled(d, n, "twoWayIndirect"), 5),
+    "Loth": (lambda d, n: coupled(d, n, "Loth"), 5),
+    "adaptive": (lambda d, n: coupled(d, n, "adaptive"), 5),
+    "axisymmetric": (wedge, 5),
+}
+
+# Families on 2 ranks as well (DEM's cartesianContacts and the NTC box are
+# covered serially; pairCollision and the rest decompose alike)
+PARALLEL = ["gas", "mppic", "hybrid", "twoWayIndirect", "axisymmetric"]
+
+
+def restart_pair(name, np_=1):
+    """Run family name whole and split; the differing files of the last
+    time directory (all processor directories on np_ ranks)."""
+    make, steps = FAMILIES[name]
+    root = os.path.join(BUILD, f"{name}_np{np_}")
+    base = make(os.path.join(root, "base"), np_)
+    dt = float(foam.get_entry(base, CONTROL, "deltaT"))
+    _set(base, [(CONTROL, "startFrom", "latestTime"),
+                (CONTROL, "writeControl", "timeStep"),
+                (CONTROL, "writeInterval", steps)])
+    whole = foam.copy_case(base, os.path.join(root, "whole"))
+    split = foam.copy_case(base, os.path.join(root, "split"))
+
+    foam.set_entry(whole, CONTROL, "endTime", f"{2*steps*dt:.17g}")
+    foam.run(whole, "rarefiedMultiphaseFoam", np_=np_)
+    foam.set_entry(split, CONTROL, "endTime", f"{steps*dt:.17g}")
+    foam.run(split, "rarefiedMultiphaseFoam", np_=np_, log="log.first")
+    foam.set_entry(split, CONTROL, "endTime", f"{2*steps*dt:.17g}")
+    stateless = foam.copy_case(split, os.path.join(root, "stateless"))
+    log = foam.run(split, "rarefiedMultiphaseFoam", np_=np_, log="log.restart")
+    with open(log) as f:
+        assert "restart state of" in f.read(), f"{name}: the restart read no state"
+
+    dirs = [""] if np_ == 1 else [f"processor{i}" for i in range(np_)]
+    for path in glob.glob(os.path.join(stateless, "*", "uniform", "lagrangian", "*", "*State")) \
+            + glob.glob(os.path.join(stateless, "processor*", "*", "uniform", "lagrangian",
+                                     "*", "*State")):
+        os.remove(path)
+    foam.run(stateless, "rarefiedMultiphaseFoam", np_=np_, log="log.restart")
+
+    def differing(other):
+        diff = []
+        for d in dirs:
+            t = foam.latest_time(os.path.join(whole, d))
+            assert t == foam.latest_time(os.path.join(other, d)), f"{name}: last times"
+            assert float(t) == pytest.approx(2*steps*dt, rel=1e-9)
+            diff += [os.path.join(d, t, f) for f in foam.differing_files(
+                os.path.join(whole, d, t), os.path.join(other, d, t))]
+        return diff
+
+    diff, control = differing(split), differing(stateless)
+    print(f"\n{name} on {np_} rank(s): {steps} + {steps} steps against {2*steps},"
+          f" {len(diff)} differing files; without the restart state"
+          f" {len(control)}")
+    return diff, control
+
+
+def _check(name, np_):
+    diff, control = restart_pair(name, np_)
+    assert not diff, f"{name} on {np_} rank(s): restarted run differs in " + ", ".join(diff)
+    if name != "dem":
+        assert control, f"{name} on {np_} rank(s): the same without the restart state"
+
+
+@pytest.mark.parametrize("name", list(FAMILIES))
+def test_exact_restart(name):
+    _check(name, 1)
+
+
+@pytest.mark.parametrize("name", PARALLEL)
+def test_exact_restart_parallel(name):
+    _check(name, 2)
