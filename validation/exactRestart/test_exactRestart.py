@@ -77,19 +77,27 @@ def gas(dst, np_):
 
 def snider(dst, np_, hybrid=False):
     """Grains, MPPIC: the Snider tutorial's models (twoSided packing,
-    relaxation damping, cachedDual) but isotropy none, 20 000 parcels
-    (every model acts on every parcel each step).  Upstream's stochastic
-    isotropy keeps the second of its Gaussian pair in function-static
-    variables, not in the cloud's stream: every run starts with a cached
-    sample of 0, so a restart draws differently (doc/physics.md 1.4)."""
+    relaxation damping, cachedDual), 20 000 parcels (every model acts on
+    every parcel each step), isotropy restartableStochastic.  Upstream's
+    stochastic isotropy keeps the second of its Gaussian pair in
+    function-static variables, not in the cloud's stream: every run starts
+    with a cached sample of 0, so a restart draws differently
+    (doc/physics.md 1.4, test_stochastic_isotropy_not_exact)."""
     case = foam.copy_setup(SNIDER, dst)
-    _set(case, [("system/grainsInitialiseDict", "regions/column/nParcels", 20000),
-                (GRAINS, "subModels/isotropyModel", "none")])
+    _set(case, [("system/grainsInitialiseDict", "regions/column/nParcels", 20000)])
+    _isotropy(case, "restartableStochastic")
     if hybrid:
         _set(case, [(GRAINS, "subModels/stochasticCollisionModel", "NTCHardSphere"),
                     (GRAINS, "subModels/NTCHardSphereCoeffs/alphaSwitch", 0.1),
                     (GRAINS, "subModels/NTCHardSphereCoeffs/randomSeed", 2)])
     return _mesh_and_fill(case, np_)
+
+
+def _isotropy(case, model):
+    """Set the isotropy model, with the tutorial's stochasticCoeffs."""
+    coeffs = foam.get_entry(case, GRAINS, "subModels/stochasticCoeffs")
+    _set(case, [(GRAINS, "subModels/isotropyModel", model),
+                (GRAINS, f"subModels/{model}Coeffs", coeffs)])
 
 
 def ntc(dst, np_):
@@ -175,7 +183,15 @@ FAMILIES = {
     "Loth": (lambda d, n: coupled(d, n, "Loth"), 5),
     "adaptive": (lambda d, n: coupled(d, n, "adaptive"), 5),
     "axisymmetric": (wedge, 5),
+    "upstreamIsotropy": (lambda d, n: _upstream_isotropy(d, n), 5),
 }
+
+
+def _upstream_isotropy(dst, np_):
+    """MPPIC with upstream's stochastic isotropy (the tutorials' choice)."""
+    case = snider(dst, np_)
+    _isotropy(case, "stochastic")
+    return case
 
 # Families on 2 ranks as well (DEM's cartesianContacts and the NTC box are
 # covered serially; pairCollision and the rest decompose alike)
@@ -236,9 +252,17 @@ def _check(name, np_):
         assert control, f"{name} on {np_} rank(s): the same without the restart state"
 
 
-@pytest.mark.parametrize("name", list(FAMILIES))
+@pytest.mark.parametrize("name", [f for f in FAMILIES if f != "upstreamIsotropy"])
 def test_exact_restart(name):
     _check(name, 1)
+
+
+def test_stochastic_isotropy_not_exact():
+    """The known exception (doc/physics.md 1.4): with upstream's stochastic
+    isotropy the restarted run differs; if this fails, upstream's model
+    has become restartable and the exception can go."""
+    diff, _ = restart_pair("upstreamIsotropy")
+    assert diff
 
 
 @pytest.mark.parametrize("name", PARALLEL)

@@ -16,13 +16,16 @@ Description
     dsmcFoam case runs unchanged, grains run alone in vacuum, or both
     together.  The grain cloud is constant/<cloud>Properties (-cloud,
     default grains).  After each step a progress line gives the simulated
-    time, the wall time used and an estimate of the wall time left.
+    time, the wall time used and an estimate of the wall time left.  A
+    time directory whose write did not finish (a killed run, a full disk)
+    is set aside at the restart (writeGuard; doc/physics.md 1.4).
 
 \*---------------------------------------------------------------------------*/
 
 #include "fvCFD.H"
 #include "rarefiedMultiphaseSystem.H"
 #include "progressReport.H"
+#include "writeGuard.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -45,6 +48,7 @@ int main(int argc, char *argv[])
 
     #include "addCheckCaseOptions.H"
     #include "setRootCaseLists.H"
+    writeGuard::skipIncomplete(args);
     #include "createTime.H"
     #include "createMesh.H"
     #include "createFields.H"
@@ -55,12 +59,13 @@ int main(int argc, char *argv[])
 
     while (runTime.loop())
     {
+        writeGuard::begin(runTime);
         Info<< "Time = " << runTime.timeName() << nl << endl;
 
         phases.evolve();
         phases.info();
 
-        runTime.write();
+        writeGuard::end(runTime, runTime.write());
 
         progress.report();
     }

@@ -6,8 +6,9 @@
 Description
     Registers, for basicSolidCloud, upstream's kinematic and MPPIC submodels (as
     MPPICFoam's cloud has them) and our own: the zonalGravity force, the
-    NTCHardSphere stochastic collision model, the twoSided packing model and
-    the erosionPlanes cloud function.
+    NTCHardSphere stochastic collision model, the twoSided packing model,
+    the restartableStochastic isotropy model and the erosionPlanes cloud
+    function.
 
 \*---------------------------------------------------------------------------*/
 
@@ -33,6 +34,7 @@ Description
 #include "ErosionPlanes.H"
 #include "NTCHardSphere.H"
 #include "TwoSided.H"
+#include "RestartableStochastic.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -53,6 +55,7 @@ makeParticleForceModelType(ZonalGravityForce, basicSolidCloud);
 makeCloudFunctionObjectType(ErosionPlanes, basicSolidCloud);
 makeStochasticCollisionModelType(NTCHardSphere, basicSolidCloud);
 makePackingModelType(TwoSided, basicSolidCloud);
+makeIsotropyModelType(RestartableStochastic, basicSolidCloud);
 
 
 // ************************************************************************* //
