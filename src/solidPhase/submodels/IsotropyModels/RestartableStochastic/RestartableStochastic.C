@@ -6,47 +6,7 @@
 
 #include "RestartableStochastic.H"
 #include "TimeScaleModel.H"
-
-// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
-
-template<class CloudType>
-template<class Type>
-const Foam::AveragingMethod<Type>&
-Foam::IsotropyModels::RestartableStochastic<CloudType>::average
-(
-    const word& name
-) const
-{
-    return this->owner().mesh().template lookupObject<AveragingMethod<Type>>
-    (
-        this->owner().name() + ":" + name
-    );
-}
-
-
-template<class CloudType>
-template<class Type>
-Foam::autoPtr<Foam::AveragingMethod<Type>>
-Foam::IsotropyModels::RestartableStochastic<CloudType>::newAverage
-(
-    const word& name
-) const
-{
-    const fvMesh& mesh = this->owner().mesh();
-
-    return AveragingMethod<Type>::New
-    (
-        IOobject
-        (
-            this->owner().name() + ":" + name,
-            mesh.time().timeName(),
-            mesh
-        ),
-        this->owner().solution().dict(),
-        mesh
-    );
-}
-
+#include "cloudAverages.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -80,22 +40,24 @@ void Foam::IsotropyModels::RestartableStochastic<CloudType>::calculate()
     Random& rnd = cloud.rndGen();
     const scalar dt = cloud.db().time().deltaTValue();
 
-    const AveragingMethod<scalar>& mass = average<scalar>("massAverage");
-    const AveragingMethod<vector>& uMean = average<vector>("uAverage");
-    const AveragingMethod<scalar>& uSqr = average<scalar>("uSqrAverage");
+    using cloudAverages::find;
+    using cloudAverages::make;
+    const AveragingMethod<scalar>& mass = find<scalar>(cloud, "massAverage");
+    const AveragingMethod<vector>& uMean = find<vector>(cloud, "uAverage");
+    const AveragingMethod<scalar>& uSqr = find<scalar>(cloud, "uSqrAverage");
 
     // Probability of keeping the velocity over the step, exp(-dt/tau_c)
-    autoPtr<AveragingMethod<scalar>> keep(newAverage<scalar>("keepAverage"));
+    autoPtr<AveragingMethod<scalar>> keep(make<scalar>(cloud, "keepAverage"));
     keep() =
         exp
         (
           - dt
            *this->timeScaleModel_->oneByTau
             (
-                average<scalar>("volumeAverage"),
-                average<scalar>("radiusAverage"),
+                find<scalar>(cloud, "volumeAverage"),
+                find<scalar>(cloud, "radiusAverage"),
                 uSqr,
-                average<scalar>("frequencyAverage")
+                find<scalar>(cloud, "frequencyAverage")
             )
         )();
 
@@ -119,7 +81,7 @@ void Foam::IsotropyModels::RestartableStochastic<CloudType>::calculate()
     }
 
     // 2. The new mean and mean square fluctuation, back to the old ones
-    autoPtr<AveragingMethod<vector>> uNew(newAverage<vector>("uRedrawn"));
+    autoPtr<AveragingMethod<vector>> uNew(make<vector>(cloud, "uRedrawn"));
     for (const auto& p : cloud)
     {
         uNew->add
@@ -133,7 +95,7 @@ void Foam::IsotropyModels::RestartableStochastic<CloudType>::calculate()
 
     autoPtr<AveragingMethod<scalar>> uSqrNew
     (
-        newAverage<scalar>("uSqrRedrawn")
+        make<scalar>(cloud, "uSqrRedrawn")
     );
     for (const auto& p : cloud)
     {

@@ -11,6 +11,7 @@
 #include "wallPolyPatch.H"
 #include "syncTools.H"
 #include "restartState.H"
+#include "cloudAverages.H"
 
 // * * * * * * * * * * * * * * * Input checks  * * * * * * * * * * * * * * * //
 
@@ -41,27 +42,6 @@ void Foam::PackingModels::TwoSided<CloudType>::checkCoeffs
 
 
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
-
-template<class CloudType>
-template<class Type>
-Foam::autoPtr<Foam::AveragingMethod<Type>>
-Foam::PackingModels::TwoSided<CloudType>::newAverage(const word& name) const
-{
-    const fvMesh& mesh = this->owner().mesh();
-
-    return AveragingMethod<Type>::New
-    (
-        IOobject
-        (
-            this->owner().name() + ":" + name,
-            mesh.time().timeName(),
-            mesh
-        ),
-        this->owner().solution().dict(),
-        mesh
-    );
-}
-
 
 template<class CloudType>
 void Foam::PackingModels::TwoSided<CloudType>::findNeighbours()
@@ -207,41 +187,25 @@ void Foam::PackingModels::TwoSided<CloudType>::cacheFields(const bool store)
 
     if (store)
     {
-        volumeAverage_ =
-            &mesh.lookupObject<AveragingMethod<scalar>>
-            (
-                cloudName + ":volumeAverage"
-            );
-        massAverage_ =
-            &mesh.lookupObject<AveragingMethod<scalar>>
-            (
-                cloudName + ":massAverage"
-            );
-        uAverage_ =
-            &mesh.lookupObject<AveragingMethod<vector>>
-            (
-                cloudName + ":uAverage"
-            );
+        const CloudType& cloud = this->owner();
+        volumeAverage_ = &cloudAverages::find<scalar>(cloud, "volumeAverage");
+        massAverage_ = &cloudAverages::find<scalar>(cloud, "massAverage");
+        uAverage_ = &cloudAverages::find<vector>(cloud, "uAverage");
 
-        stressAverage_ = newAverage<scalar>("stressAverage");
+        stressAverage_ = cloudAverages::make<scalar>(cloud, "stressAverage");
         stressAverage_() =
             this->particleStressModel_->tau
             (
                 *volumeAverage_,
-                mesh.lookupObject<AveragingMethod<scalar>>
-                (
-                    cloudName + ":rhoAverage"
-                ),
-                mesh.lookupObject<AveragingMethod<scalar>>
-                (
-                    cloudName + ":uSqrAverage"
-                )
+                cloudAverages::find<scalar>(cloud, "rhoAverage"),
+                cloudAverages::find<scalar>(cloud, "uSqrAverage")
             )();
 
         if (!uStart_.valid())
         {
-            uStart_ = newAverage<vector>("twoSidedStartVelocity");
-            uEnd_ = newAverage<vector>("twoSidedEndVelocity");
+            uStart_ =
+                cloudAverages::make<vector>(cloud, "twoSidedStartVelocity");
+            uEnd_ = cloudAverages::make<vector>(cloud, "twoSidedEndVelocity");
 
             // u_m of a restart: every part of the average (dual: the
             // cells' and the points')
