@@ -34,6 +34,17 @@ def test_snider_checks(results):
     assert not failed, failed
 
 
+def test_paraview(results):
+    """The serial run opened in ParaView as users do (rmf.pvcheck: a .foam
+    file, the last time, alpha.grains with the range of its file, the
+    averaged alpha and parcel counts, every parcel of the cloud with the
+    project's own fields, a picture that is not blank)."""
+    from rmf import pvcheck
+    failures, _ = pvcheck.check(results["cases"]["serial"], "alpha.grains", "grains",
+                                extra_cells=("alphaAverage.grains", "nParcels.grains"))
+    assert not failures, failures
+
+
 def test_overpacking_bounds(results):
     """Full size (--long): the layer and averaged cell bounds of
     doc/physics.md 5.3; the reduced runs' heavier parcels are checked

@@ -225,6 +225,7 @@ def validate(full=False, build=BUILD, parallel_case=None):
     print("PASS" if ok else "FAIL")
     return ok, {"checks": checks, "serial": s, "parallel": p, "e05": e,
                 "widths": (w05, w085), "seconds": (t_serial, t_parallel, t_e05),
+                "cases": {"serial": serial, "parallel": parallel, "e05": e05},
                 "pngs": (png, compare_png)}
 
 

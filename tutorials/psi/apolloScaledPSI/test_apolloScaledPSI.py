@@ -201,6 +201,18 @@ def test_jet_moves_layer(runs):
         assert ok
 
 
+def test_paraview(runs):
+    """The serial demo opened in ParaView as users do (rmf.pvcheck: a
+    .foam file, the last time, the gas's number density with the range
+    of its file, the grain and gas fields of the project, every grain
+    parcel with the project's own fields, a picture that is not blank)."""
+    from rmf import pvcheck
+    failures, found = pvcheck.check(runs["serial"], "rhoN", "grains",
+                                    extra_cells=("alpha.grains", "lambda.gas", "Knp.grains"))
+    assert "dsmc" in found["clouds"], "the gas simulators are not readable"
+    assert not failures, failures
+
+
 def test_summary(runs):
     for case in runs.values():
         assert os.path.getsize(os.path.join(case, "observables", "summary.md")) > 0
