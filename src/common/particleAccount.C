@@ -32,7 +32,7 @@ void Foam::particleAccount::closeStep
 )
 {
     const label nPatches = escapedStep_.size();
-    scalarField counts(nPatches + 6);
+    scalarField counts(nPatches + 7);
     forAll(escapedStep_, patchi)
     {
         counts[patchi] = escapedStep_[patchi];
@@ -43,6 +43,7 @@ void Foam::particleAccount::closeStep
     counts[nPatches + 3] = nInLocal;
     counts[nPatches + 4] = clonedStep_;
     counts[nPatches + 5] = deletedStep_;
+    counts[nPatches + 6] = crossedStep_;
 
     Pstream::listCombineGather(counts, plusEqOp<scalar>());
     Pstream::listCombineScatter(counts);
@@ -55,6 +56,7 @@ void Foam::particleAccount::closeStep
     outLast_ = sum(escaped);
     clonedLast_ = counts[nPatches + 4];
     deletedLast_ = counts[nPatches + 5];
+    crossedLast_ = counts[nPatches + 6];
 
     // What the weighting added (clones) less what it removed
     const scalar reweighted = clonedLast_ - deletedLast_;
@@ -75,11 +77,13 @@ void Foam::particleAccount::closeStep
     inTotal_ += inLast_;
     clonedTotal_ += clonedLast_;
     deletedTotal_ += deletedLast_;
+    crossedTotal_ += crossedLast_;
 
     escapedStep_ = Zero;
     lostStep_ = 0;
     clonedStep_ = 0;
     deletedStep_ = 0;
+    crossedStep_ = 0;
 }
 
 
@@ -105,6 +109,14 @@ void Foam::particleAccount::info(const polyBoundaryMesh& patches) const
             << clonedLast_ << " / " << deletedLast_ << nl
             << label(" cloned / deleted since start").c_str() << "= "
             << clonedTotal_ << " / " << deletedTotal_ << nl;
+    }
+
+    if (Pstream::parRun())
+    {
+        Info<< label(" crossed processors this step").c_str() << "= "
+            << crossedLast_ << nl
+            << label(" crossed processors since start").c_str() << "= "
+            << crossedTotal_ << nl;
     }
 
     forAll(escapedTotal_, patchi)

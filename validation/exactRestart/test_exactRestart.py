@@ -52,7 +52,31 @@ def _set(case, entries):
         foam.set_entry(case, path, entry, value)
 
 
-def _mesh_and_fill(case, np_=1):
+def _seed(case, seed):
+    """Seed every stream the case has: the gas and its fill, the grain
+    fill, the grain cloud's own stream, NTC hard spheres and the two-way
+    coupling (seed None: the case's own seeds)."""
+    if seed is None:
+        return
+    for path in ("constant/dsmcProperties", "system/dsmcInitialiseDict",
+                 "system/grainsInitialiseDict", GRAINS):
+        if os.path.exists(os.path.join(case, path)):
+            foam.set_entry(case, path, "randomSeed", seed)
+    if not os.path.exists(os.path.join(case, GRAINS)):
+        return
+    models = foam.dict_text(os.path.join(case, GRAINS))
+    if re.search(r"stochasticCollisionModel\s+NTCHardSphere\s*;", models):
+        foam.set_entry(case, GRAINS, "subModels/NTCHardSphereCoeffs/randomSeed", seed)
+    coupling = os.path.join(case, "constant", "couplingType")
+    if os.path.exists(coupling):
+        models += foam.dict_text(coupling)
+    for kind in ("twoWayDirect", "twoWayIndirect"):
+        if re.search(rf"interphaseCoupling\s+{kind}\s*;", models):
+            foam.set_entry(case, GRAINS, f"subModels/{kind}Coeffs", f"{{ randomSeed {seed}; }}")
+
+
+def _mesh_and_fill(case, np_=1, seed=None):
+    _seed(case, seed)
     foam.set_entry(case, CONTROL, "writeFormat", "binary")
     foam.set_entry(case, CONTROL, "functions", "{}")
     foam.run(case, "blockMesh")
@@ -66,16 +90,17 @@ def _mesh_and_fill(case, np_=1):
     return case
 
 
-# Model families: name -> (make the case in dst, steps N)
+# Model families: name -> (make the case in dst on np_ ranks with seed,
+# steps N)
 
-def gas(dst, np_):
+def gas(dst, np_, seed=None):
     """Gas alone: dsmcFoam's freeSpacePeriodic, own stream (randomSeed)."""
     case = foam.copy_case(foam.dsmc_tutorial("freeSpacePeriodic"), dst)
     foam.set_entry(case, "constant/dsmcProperties", "randomSeed", 1)
-    return _mesh_and_fill(case, np_)
+    return _mesh_and_fill(case, np_, seed)
 
 
-def snider(dst, np_, hybrid=False):
+def snider(dst, np_, seed=None, hybrid=False):
     """Grains, MPPIC: the Snider tutorial's models (twoSided packing,
     relaxation damping, cachedDual), 20 000 parcels (every model acts on
     every parcel each step), isotropy restartableStochastic.  Upstream's
@@ -90,7 +115,7 @@ def snider(dst, np_, hybrid=False):
         _set(case, [(GRAINS, "subModels/stochasticCollisionModel", "NTCHardSphere"),
                     (GRAINS, "subModels/NTCHardSphereCoeffs/alphaSwitch", 0.1),
                     (GRAINS, "subModels/NTCHardSphereCoeffs/randomSeed", 2)])
-    return _mesh_and_fill(case, np_)
+    return _mesh_and_fill(case, np_, seed)
 
 
 def _isotropy(case, model):
@@ -100,33 +125,35 @@ def _isotropy(case, model):
                 (GRAINS, f"subModels/{model}Coeffs", coeffs)])
 
 
-def ntc(dst, np_):
+def ntc(dst, np_, seed=None):
     """Grains, NTC hard spheres alone: the homogeneous cooling box."""
     case = foam.copy_setup(GRANULAR, dst)
-    return _mesh_and_fill(case, np_)
+    return _mesh_and_fill(case, np_, seed)
 
 
-def dem(dst, np_):
+def dem(dst, np_, seed=None):
     """Grains, soft-sphere DEM (pairCollision, contact springs in the
     parcels' collision records): 200 grains in a box of 1 cm under
     gravity, random velocities of 0.1 m/s, so that contacts last across
-    the restart."""
+    the restart.  DEM draws nothing: seed (default 1) sets the grains'
+    initial positions and velocities."""
+    seed = 1 if seed is None else seed
     sys.path.insert(0, os.path.join(ROOT, "validation", "demContacts"))
     import test_demContacts as box
     case = foam.copy_setup(DEM_BOX, dst)
-    rng = np.random.default_rng(3)
+    rng = np.random.default_rng(seed + 2)
     side = box.L
     n = 6
     grid = (np.arange(n) + 0.5)*side/n
     xs = np.array([(x, y, z) for x in grid for y in grid[:3] for z in grid])
     xs = xs + rng.uniform(-0.2, 0.2, xs.shape)*box.D
-    box.write_grains(case, {"grains": (xs, (0, 0, 0), 0.1)}, seed=4)
+    box.write_grains(case, {"grains": (xs, (0, 0, 0), 0.1)}, seed=seed + 3)
     dt = box.contact_time(0.8, box.MASS/2)/20
     _set(case, [(CONTROL, "deltaT", f"{dt:.17g}")])
     return _mesh_and_fill(case, np_)
 
 
-def coupled(dst, np_, coupling):
+def coupled(dst, np_, coupling, seed=None):
     """Gas and grains: the dustCloudStream tutorial with one
     interphaseCoupling type (FreeStream inflow replaced by PatchInflow,
     whose carried fractions are written; upstream's FreeStream restarts
@@ -136,7 +163,7 @@ def coupled(dst, np_, coupling):
         f.write(f"interphaseCoupling {coupling};\n")
     _patch_inflow(case)
     _set(case, [("constant/dsmcProperties", "randomSeed", 1)])
-    return _mesh_and_fill(case, np_)
+    return _mesh_and_fill(case, np_, seed)
 
 
 def _patch_inflow(case):
@@ -154,7 +181,7 @@ def _patch_inflow(case):
                    f"{{ inlet {{ {state} }} outlet {{ {state} }} }}")
 
 
-def wedge(dst, np_):
+def wedge(dst, np_, seed=None):
     """Axisymmetric, radially weighted gas (maxRadialWeight 10) and grains
     (weighted parcels, their clone/delete stream), two-way direct coupling:
     the argon wedge of validation/axisymmetricGas at rest inside a wall,
@@ -168,20 +195,20 @@ def wedge(dst, np_):
                 ("system/grainsInitialiseDict", "regions/cloud/d", 1e-5),
                 ("system/grainsInitialiseDict", "regions/cloud/alpha0", 1e-6),
                 ("system/grainsInitialiseDict", "regions/cloud/nParcels", 2000)])
-    return _mesh_and_fill(case, np_)
+    return _mesh_and_fill(case, np_, seed)
 
 
 FAMILIES = {
     "gas": (gas, 10),
     "mppic": (snider, 5),
-    "hybrid": (lambda d, n: snider(d, n, hybrid=True), 5),
+    "hybrid": (lambda d, n, seed=None: snider(d, n, seed, hybrid=True), 5),
     "ntc": (ntc, 5),
     "dem": (dem, 10),
-    "oneWay": (lambda d, n: coupled(d, n, "oneWay"), 5),
-    "twoWayDirect": (lambda d, n: coupled(d, n, "twoWayDirect"), 5),
-    "twoWayIndirect": (lambda d, n: coupled(d, n, "twoWayIndirect"), 5),
-    "Loth": (lambda d, n: coupled(d, n, "Loth"), 5),
-    "adaptive": (lambda d, n: coupled(d, n, "adaptive"), 5),
+    "oneWay": (lambda d, n, seed=None: coupled(d, n, "oneWay", seed), 5),
+    "twoWayDirect": (lambda d, n, seed=None: coupled(d, n, "twoWayDirect", seed), 5),
+    "twoWayIndirect": (lambda d, n, seed=None: coupled(d, n, "twoWayIndirect", seed), 5),
+    "Loth": (lambda d, n, seed=None: coupled(d, n, "Loth", seed), 5),
+    "adaptive": (lambda d, n, seed=None: coupled(d, n, "adaptive", seed), 5),
     "axisymmetric": (wedge, 5),
     "upstreamIsotropy": (lambda d, n: _upstream_isotropy(d, n), 5),
 }

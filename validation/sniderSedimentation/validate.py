@@ -100,7 +100,7 @@ def solve(case, np_=1):
     if np_ > 1:
         foam.run(case, "decomposePar")
         foam.run(case, "rarefiedMultiphaseFoam", np_=np_)
-        foam.run(case, "reconstructPar")
+        foam.run(case, "reconstructPar", *foam.RECONSTRUCT_ALL)
     else:
         foam.run(case, "rarefiedMultiphaseFoam")
     return time.time() - start

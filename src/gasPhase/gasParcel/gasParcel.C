@@ -23,6 +23,7 @@ Foam::gasParcel::trackingData::trackingData(DSMCCloud<gasParcel>& cloud)
     particle::trackingData(cloud),
     nEscaped_(owner(cloud).account().escapedStep()),
     nLost_(owner(cloud).account().lostStep()),
+    nCrossed_(owner(cloud).account().crossedStep()),
     owner_(owner(cloud)),
     axisymmetric_
     (

@@ -121,14 +121,21 @@ def run(case, *args, log=None, np_=1):
     return os.path.join(case, log)
 
 
+# reconstructPar's options for every lagrangian field: without a selection
+# v1912 leaves out fields of lists per parcel (the DEM contact histories,
+# collisionRecords*; doc/physics.md 1.4)
+RECONSTRUCT_ALL = ("-lagrangianFields", '(".*")')
+
+
 def run_solver(case, np_=1):
     """rarefiedMultiphaseFoam on an initialised case, serial or on np_
-    ranks (decomposePar before, reconstructPar after); returns the log."""
+    ranks (decomposePar before, reconstructPar after, every lagrangian
+    field: RECONSTRUCT_ALL); returns the log."""
     if np_ > 1:
         run(case, "decomposePar")
     log = run(case, "rarefiedMultiphaseFoam", np_=np_)
     if np_ > 1:
-        run(case, "reconstructPar")
+        run(case, "reconstructPar", *RECONSTRUCT_ALL)
     return log
 
 
@@ -160,11 +167,13 @@ def dsmc_tutorial(name):
 
 def set_steps(case, steps):
     """Run a case from its start time for steps time steps, written once at
-    the end (endTime = writeInterval = steps*deltaT)."""
+    the end (endTime = steps*deltaT; writeInterval the same in the case's
+    writeControl: steps for timeStep, steps*deltaT otherwise)."""
     control = "system/controlDict"
     end = f"{steps*float(get_entry(case, control, 'deltaT')):.6g}"
     set_entry(case, control, "endTime", end)
-    set_entry(case, control, "writeInterval", end)
+    byStep = get_entry(case, control, "writeControl") == "timeStep"
+    set_entry(case, control, "writeInterval", steps if byStep else end)
     set_entry(case, control, "startFrom", "startTime")
 
 
@@ -235,6 +244,32 @@ def read_list(path):
     if len(values) != n:
         raise ValueError(f"{path}: expected {n} values, read {len(values)}")
     return values
+
+
+def list_size(path):
+    """Number of entries of an ASCII list file of any element type (a
+    parcel property, or a list per parcel such as collisionRecords*):
+    the entries at the outer level of its list, checked against the
+    size written before it."""
+    with open(path, "rb") as f:
+        text = f.read()
+    m = re.search(rb"\n(\d+)\s*([({])", text)
+    if not m:
+        raise ValueError(f"{path}: no list found")
+    n = int(m.group(1))
+    if m.group(2) == b"{":                  # n{value}: all equal
+        return n
+    depth, count, blank = 1, 0, True
+    for c in text[m.end():]:
+        if depth == 1 and not chr(c).isspace() and c != ord(")") and blank:
+            count += 1
+        blank = chr(c).isspace() and depth == 1
+        depth += (c == ord("(")) - (c == ord(")"))
+        if depth == 0:
+            break
+    if count != n:
+        raise ValueError(f"{path}: {n} entries announced, {count} read")
+    return n
 
 
 def dict_text(path):

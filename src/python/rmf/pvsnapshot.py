@@ -24,6 +24,26 @@ from paraview.simple import (ColorBy, CreateRenderView, ExtractBlock,
                              OpenFOAMReader, ResetCamera, SaveScreenshot, Show)
 
 
+def look(view, reader):
+    """Camera across a thin case (a 2-D slab or a wedge) along its thinnest
+    axis, the later of the other two up (y for an x-y slab); from the side
+    of a 3-D box (along y, z up)."""
+    b = reader.GetDataInformation().GetBounds()
+    extent = [b[2*i + 1] - b[2*i] for i in range(3)]
+    centre = [(b[2*i + 1] + b[2*i])/2 for i in range(3)]
+    thin = min(range(3), key=lambda i: extent[i])
+    if extent[thin] < 0.5*sorted(extent)[1]:
+        along, up = thin, [i for i in range(3) if i != thin][1]
+    else:
+        along, up = 1, 2
+    position = list(centre)
+    position[along] -= 10*max(extent)
+    view.CameraPosition = position
+    view.CameraFocalPoint = centre
+    view.CameraViewUp = [1.0 if i == up else 0.0 for i in range(3)]
+    ResetCamera(view)
+
+
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("case")
@@ -87,10 +107,10 @@ def main():
     if cloud in clouds:
         parcels = Show(ExtractBlock(Input=reader, Selectors=["/Root/" + cloud]), view)
         parcels.SetRepresentationType("Points")
-        parcels.PointSize = 3
+        parcels.PointSize = 2
         parcels.ColorArrayName = [None, ""]
         parcels.AmbientColor = parcels.DiffuseColor = [0.1, 0.1, 0.1]
-    ResetCamera(view)
+    look(view, reader)
     SaveScreenshot(output, view, ImageResolution=[800, 600])
 
 
