@@ -15,7 +15,7 @@ Foam::axisymmetricMode::axisymmetricMode
     const word& phase
 )
 :
-    active_(dict.getOrDefault<bool>("axisymmetric", false)),
+    active_(inputChecks::getBoolOrDefault(dict, "axisymmetric", false)),
     radialExtent_(GREAT),
     maxWeight_(1),
     angle_(0)
@@ -30,7 +30,7 @@ Foam::axisymmetricMode::axisymmetricMode
             {
                 badValue
                 (
-                    dict, key, dict.get<scalar>(key),
+                    dict, key, dict.lookup(key).toString().c_str(),
                     "only with 'axisymmetric true;'"
                 );
             }
@@ -39,11 +39,7 @@ Foam::axisymmetricMode::axisymmetricMode
     }
 
     radialExtent_ = getPositive(dict, "radialExtent");
-    maxWeight_ = dict.getOrDefault<scalar>("maxRadialWeight", 1);
-    if (!(maxWeight_ >= 1 && std::isfinite(maxWeight_)))
-    {
-        outOfRange(dict, "maxRadialWeight", maxWeight_, "[1, inf)");
-    }
+    maxWeight_ = getAtLeast(dict, "maxRadialWeight", 1, 1);
 
     // The mesh: a wedge about the x axis, y radial, reaching the axis
     const auto notWedge = [&dict](const std::string& why)

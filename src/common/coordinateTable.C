@@ -35,7 +35,7 @@ Foam::coordinateTable::coordinateTable
 :
     dict_(dict),
     coordinate_(0),
-    origin_(dict.getOrDefault<point>("origin", Zero)),
+    origin_(inputChecks::getVectorOrDefault(dict, "origin", Zero)),
     axis_(Zero),
     clamp_(false),
     keyword_("table"),
@@ -44,15 +44,10 @@ Foam::coordinateTable::coordinateTable
     using namespace inputChecks;
 
     const wordList coordinates({"x", "y", "z", "r"});
-    const word coord(dict.get<word>("coordinate"));
-    coordinate_ = coordinates.find(coord);
-    if (coordinate_ < 0)
-    {
-        notOneOf(dict, "coordinate", coord, coordinates);
-    }
+    coordinate_ = coordinates.find(getChoice(dict, "coordinate", coordinates));
     if (coordinate_ == 3)
     {
-        const vector a(dict.get<vector>("axis"));
+        const vector a(getVector(dict, "axis"));
         if (!(mag(a) > VSMALL))
         {
             badValue(dict, "axis", a, "a vector of non-zero length");
@@ -60,16 +55,11 @@ Foam::coordinateTable::coordinateTable
         axis_ = a/mag(a);
     }
 
-    const wordList bounds({"error", "clamp"});
-    const word outside
+    clamp_ =
     (
-        dict.getOrDefault<word>("outOfBounds", "error")
+        getChoiceOrDefault(dict, "outOfBounds", "error", {"error", "clamp"})
+     == "clamp"
     );
-    if (!bounds.found(outside))
-    {
-        notOneOf(dict, "outOfBounds", outside, bounds);
-    }
-    clamp_ = (outside == "clamp");
 
     // The rows, inline or from a file
     if (dict.found("table") || !dict.found("file"))
@@ -79,7 +69,7 @@ Foam::coordinateTable::coordinateTable
     else
     {
         keyword_ = "file";
-        fileName name(dict.get<fileName>("file"));
+        fileName name(getName(dict, "file", "a readable file", false));
         name.expand();
         IFstream is(name);
         if (!is.good())

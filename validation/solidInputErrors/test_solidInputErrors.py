@@ -158,7 +158,7 @@ def test_drag_force_beside_coupling(meshed):
 INIT_CASES = [
     ("alpha0High", "alpha0", "0.6", "(0, alphaPacked = 0.6)", "nParcels"),
     ("alpha0Zero", "alpha0", "0", "(0, alphaPacked = 0.6)", "nParcels"),
-    ("diameter", "d", "-0.0003", "(0, inf)", None),
+    ("diameter", "d", "-0.0003", "(0, the mesh's diagonal = ", None),
     ("weight", "nParticle", "-749", "(0, inf)", None),
     ("spread", "sigmaU", "-0.5", "[0, inf)", None),
 ]

@@ -26,6 +26,7 @@ Description
 #include "rarefiedMultiphaseSystem.H"
 #include "progressReport.H"
 #include "writeGuard.H"
+#include "inputChecks.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -46,12 +47,29 @@ int main(int argc, char *argv[])
         "Solid cloud name (default grains): constant/<name>Properties"
     );
 
+    argList::addBoolOption
+    (
+        "listKeywords",
+        "Read and check the case's set-up, print every keyword checked"
+        " (dictionary, kind, valid range or choices) and stop"
+    );
+
     #include "addCheckCaseOptions.H"
     #include "setRootCaseLists.H"
+    if (args.found("listKeywords"))
+    {
+        inputChecks::keywordRecord::start();
+    }
     writeGuard::skipIncomplete(args);
     #include "createTime.H"
     #include "createMesh.H"
     #include "createFields.H"
+
+    if (inputChecks::keywordRecord::active())
+    {
+        inputChecks::keywordRecord::print(runTime.path());
+        return 0;
+    }
 
     progressReport progress(runTime);
 

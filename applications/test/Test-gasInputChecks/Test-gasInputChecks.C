@@ -205,7 +205,7 @@ int main(int argc, char *argv[])
             "dsmcProperties unknown " + model,
             changed(props, model, "NoSuchModel"),
             init,
-            {model, "NoSuchModel", "Valid"}
+            {model, "NoSuchModel", "valid: one of"}
         );
     }
 

@@ -95,7 +95,7 @@ static void fillSolids
 
     Info<< "Solid parcels added: " << nTotal << nl << endl;
 
-    if (!cloud.write())
+    if (!inputChecks::keywordRecord::active() && !cloud.write())
     {
         FatalErrorInFunction
             << "Failed writing cloud " << cloudName << exit(FatalError);
@@ -167,8 +167,18 @@ int main(int argc, char *argv[])
         "name",
         "Solid cloud name (default grains)"
     );
+    argList::addBoolOption
+    (
+        "listKeywords",
+        "Read and check the set-up as for initialising, print every keyword"
+        " checked (dictionary, kind, valid range or choices), write nothing"
+    );
 
     #include "setRootCase.H"
+    if (args.found("listKeywords"))
+    {
+        inputChecks::keywordRecord::start();
+    }
     #include "createTime.H"
     #include "createNamedMesh.H"
 
@@ -199,7 +209,7 @@ int main(int argc, char *argv[])
         Info<< nl << "Gas simulators added: "
             << returnReduce(gas.size(), sumOp<label>()) << nl << endl;
 
-        if (!mesh.write())
+        if (!inputChecks::keywordRecord::active() && !mesh.write())
         {
             FatalErrorInFunction
                 << "Failed writing the initial gas" << exit(FatalError);
@@ -211,6 +221,11 @@ int main(int argc, char *argv[])
             << "No phase to initialise: neither " << runTime.system()
             << "/dsmcInitialiseDict nor " << runTime.system() << "/"
             << solidCloudName << "InitialiseDict found" << exit(FatalError);
+    }
+
+    if (inputChecks::keywordRecord::active())
+    {
+        inputChecks::keywordRecord::print(runTime.path());
     }
 
     runTime.printExecutionTime(Info);

@@ -17,18 +17,16 @@ void Foam::prescribedGas::readConstants(const dictionary& dict)
     {
         g.mu = inputChecks::getPositive(dict, "mu");
     }
-    g.gamma = dict.get<scalar>("gamma");
     // 5/3 as written with 6 digits (1.66667) is accepted
-    if (!(g.gamma > 1 && g.gamma <= 5.0/3.0*(1 + 1e-5)))
-    {
-        inputChecks::outOfRange(dict, "gamma", g.gamma, "(1, 5/3]");
-    }
+    g.gamma = inputChecks::getInterval
+    (
+        dict, "gamma", 1, 5.0/3.0*(1 + 1e-5), true, false, true, 0, "5/3"
+    );
     g.R = inputChecks::getPositive(dict, "R");
-    g.Pr = 4*g.gamma/(9*g.gamma - 5);
-    if (dict.found("Pr"))
-    {
-        g.Pr = inputChecks::getPositive(dict, "Pr");
-    }
+    g.Pr = inputChecks::getPositiveOrDefault
+    (
+        dict, "Pr", 4*g.gamma/(9*g.gamma - 5)
+    );
 }
 
 
@@ -82,7 +80,7 @@ Foam::prescribedGas::prescribedGas(const dictionary& dict)
 
     state& g = uniform_;
     g.rho = inputChecks::getPositive(dict, "rho");
-    g.U = dict.get<vector>("U");
+    g.U = inputChecks::getVector(dict, "U");
     g.T = inputChecks::getPositive(dict, "T");
     readConstants(dict);
     Info<< "    prescribed gas: uniform, rho " << g.rho

@@ -36,7 +36,7 @@ Foam::wordList Foam::gasCloudInputCheck::checkProperties
 
     getPositive(dict, "nEquivalentParticles");
     getLabelOrDefault(dict, "randomSeed", 0, 0, 2000);
-    dict.getOrDefault<bool>("randomEntryTime", false);
+    getBoolOrDefault(dict, "randomEntryTime", false);
 
     const wordList species(dict.get<wordList>("typeIdList"));
     if (species.empty())
@@ -75,7 +75,10 @@ Foam::wordList Foam::gasCloudInputCheck::checkProperties
         const dictionary& coeffs = dict.subDict(collision + "Coeffs");
         rejectUnknown(coeffs, {"Tref", "relaxationCollisionNumber"});
         getPositive(coeffs, "Tref");
-        getClosed(coeffs, "relaxationCollisionNumber", 1, GREAT);
+        getInterval
+        (
+            coeffs, "relaxationCollisionNumber", 1, VGREAT, false, true, true, 0
+        );
     }
 
     const word wall
@@ -109,7 +112,7 @@ Foam::wordList Foam::gasCloudInputCheck::checkProperties
             {
                 notOneOf(densities, "numberDensities", name, species);
             }
-            getNonNegative(densities, name);
+            getNonNegativeOrDefault(densities, name, 0);
         }
     }
 
@@ -146,7 +149,7 @@ void Foam::gasCloudInputCheck::checkInitialise
     );
     getLabelOrDefault(dict, "randomSeed", 0, 0, 2000);
     getPositive(dict, "temperature");
-    dict.get<vector>("velocity");
+    getVector(dict, "velocity");
 
     const dictionary& densities = dict.subDict("numberDensities");
     if (densities.empty())
@@ -159,7 +162,7 @@ void Foam::gasCloudInputCheck::checkInitialise
         {
             notOneOf(densities, "numberDensities", name, species);
         }
-        getNonNegative(densities, name);
+        getNonNegativeOrDefault(densities, name, 0);
     }
 }
 

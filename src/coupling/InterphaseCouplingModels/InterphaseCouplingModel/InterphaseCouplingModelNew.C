@@ -5,6 +5,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "InterphaseCouplingModel.H"
+#include "inputChecks.H"
 
 // * * * * * * * * * * * * * * * * * Selector * * * * * * * * * * * * * * * //
 
@@ -16,22 +17,17 @@ Foam::InterphaseCouplingModel<CloudType>::New
     CloudType& owner
 )
 {
-    const word modelType(dict.get<word>(typeName));
+    const word modelType
+    (
+        inputChecks::modelName<InterphaseCouplingModel<CloudType>>
+        (
+            dict, typeName
+        )
+    );
 
     Info<< "Selecting interphase coupling model " << modelType << endl;
 
     auto cstrIter = dictionaryConstructorTablePtr_->cfind(modelType);
-
-    if (!cstrIter.found())
-    {
-        FatalIOErrorInLookup
-        (
-            dict,
-            typeName,
-            modelType,
-            *dictionaryConstructorTablePtr_
-        ) << exit(FatalIOError);
-    }
 
     return autoPtr<InterphaseCouplingModel<CloudType>>
     (

@@ -30,16 +30,14 @@ void Foam::LothCoupling<CloudType>::readCoeffs
         (
             dict, {"gas", "lift", "averagingSteps", "prescribed"}
         );
-        const word gas(dict.get<word>("gas"));
-        const wordList valid({"dsmc", "prescribed"});
-        if (!valid.found(gas))
-        {
-            inputChecks::notOneOf(dict, "gas", gas, valid);
-        }
-        fromDsmc_ = (gas == "dsmc");
+        fromDsmc_ =
+        (
+            inputChecks::getChoice(dict, "gas", {"dsmc", "prescribed"})
+         == "dsmc"
+        );
     }
 
-    lift_ = dict.getOrDefault<bool>("lift", false);
+    lift_ = inputChecks::getBoolOrDefault(dict, "lift", false);
     if (lift_)
     {
         Info<< "    Loth: shear lift on" << endl;

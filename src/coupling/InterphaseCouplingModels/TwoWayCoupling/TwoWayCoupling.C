@@ -284,8 +284,25 @@ Foam::label Foam::TwoWayCoupling<CloudType>::subSteps
         rateMax = max(rateMax, rate);
     }
 
-    const scalar x = rateMax*dt/this->owner().mesh().V()[celli];
-    return max(label(1), label(std::ceil(x/maxCollisionsPerStep_)));
+    // Beyond a million sub-steps (or an overflowing rate) the grains'
+    // size and weight are outside what the coupling can resolve: stop
+    // rather than convert an unbounded count
+    const scalar n =
+        std::ceil(rateMax*dt/this->owner().mesh().V()[celli]/maxCollisionsPerStep_);
+    if (!(n <= maxSubSteps_))
+    {
+        FatalIOErrorInFunction(this->dict())
+            << "interphaseCoupling " << this->modelType() << ": cell "
+            << celli << " needs " << n << " sub-steps (more than "
+            << maxSubSteps_ << ") to keep maxCollisionsPerStep "
+            << maxCollisionsPerStep_ << " per gas simulator: the grains'"
+            << " cross-section times weight (W pi d^2/4) is too large for"
+            << " the cell and time step"
+            << nl << "    valid: grain diameters and parcel weights whose"
+            << " collision rate needs at most " << maxSubSteps_
+            << " sub-steps" << exit(FatalIOError);
+    }
+    return max(label(1), label(n));
 }
 
 

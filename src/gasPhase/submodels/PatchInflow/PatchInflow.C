@@ -62,7 +62,7 @@ Foam::PatchInflow<CloudType>::readPatch
             notOneOf(comp, "composition", s, species);
         }
         ip.typeIds.append(typeId);
-        ip.fractions.append(getNonNegative(comp, s));
+        ip.fractions.append(getNonNegativeOrDefault(comp, s, 0));
         sum += ip.fractions.last();
     }
     if (ip.typeIds.empty() || mag(sum - 1) > 1e-6)
@@ -80,7 +80,7 @@ Foam::PatchInflow<CloudType>::readPatch
     {
         ip.n = scalarField(nFaces, getNonNegative(dict, "n"));
         ip.T = scalarField(nFaces, getPositive(dict, "T"));
-        ip.U = vectorField(nFaces, dict.get<vector>("U"));
+        ip.U = vectorField(nFaces, getVector(dict, "U"));
     }
 
     ip.carry = List<scalarField>(ip.typeIds.size(), scalarField(nFaces, Zero));

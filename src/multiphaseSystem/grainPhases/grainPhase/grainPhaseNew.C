@@ -6,6 +6,7 @@
 
 #include "grainPhase.H"
 #include "IOdictionary.H"
+#include "inputChecks.H"
 
 // * * * * * * * * * * * * * * * * * Selector  * * * * * * * * * * * * * * * //
 
@@ -34,23 +35,15 @@ Foam::autoPtr<Foam::grainPhase> Foam::grainPhase::New
 
     const word kind
     (
-        dict.getOrDefault<word>("cloudType", "basicSolidCloud")
+        inputChecks::modelNameOrDefault<grainPhase>
+        (
+            dict, "cloudType", "basicSolidCloud"
+        )
     );
 
     Info<< "Selecting grain cloud " << kind << endl;
 
     auto cstrIter = dictionaryConstructorTablePtr_->cfind(kind);
-
-    if (!cstrIter.found())
-    {
-        FatalIOErrorInLookup
-        (
-            dict,
-            "cloudType",
-            kind,
-            *dictionaryConstructorTablePtr_
-        ) << exit(FatalIOError);
-    }
 
     return cstrIter()(cloudName, carrier, g, gasPresent);
 }

@@ -42,8 +42,8 @@ Foam::regionFills::boxFill::boxFill
 )
 :
     regionFill(dict, setup, {"min", "max"}, true),
-    lo_(dict.get<point>("min")),
-    hi_(dict.get<point>("max")),
+    lo_(inputChecks::getVector(dict, "min")),
+    hi_(inputChecks::getVector(dict, "max")),
     span_(hi_ - lo_),
     w0_(1)
 {

@@ -32,15 +32,11 @@ Foam::regionFills::cellZoneFill::cellZoneFill
             << "rarefiedMultiphaseInitialise before decomposePar"
             << exit(FatalIOError);
     }
-    const word zoneName(dict.get<word>("zone"));
+    const word zoneName
+    (
+        inputChecks::getChoice(dict, "zone", mesh_.cellZones().names())
+    );
     const label zonei = mesh_.cellZones().findZoneID(zoneName);
-    if (zonei < 0)
-    {
-        inputChecks::notOneOf
-        (
-            dict, "zone", zoneName, mesh_.cellZones().names()
-        );
-    }
     boundBox bb;
     for (const label celli : mesh_.cellZones()[zonei])
     {

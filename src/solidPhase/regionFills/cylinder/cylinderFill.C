@@ -26,9 +26,9 @@ Foam::regionFills::cylinderFill::cylinderFill
 )
 :
     regionFill(dict, setup, {"p1", "p2", "radius"}),
-    p1_(dict.get<point>("p1"))
+    p1_(inputChecks::getVector(dict, "p1"))
 {
-    const point p2(dict.get<point>("p2"));
+    const point p2(inputChecks::getVector(dict, "p2"));
     R_ = inputChecks::getPositive(dict, "radius");
     axis_ = p2 - p1_;
     const scalar L = mag(axis_);

@@ -30,7 +30,10 @@ Foam::regionFills::positionsFileFill::positionsFileFill
         (
             IOobject
             (
-                dict.get<fileName>("file"),
+                inputChecks::getName
+                (
+                    dict, "file", "a file of points in constant/"
+                ),
                 setup.mesh.time().constant(),
                 setup.mesh,
                 IOobject::MUST_READ,

@@ -37,18 +37,10 @@ Foam::regionFill::regionFill
     constProps_(setup.constProps),
     axisymmetric_(setup.axisymmetric),
     rnd_(setup.rnd),
-    d_(inputChecks::getPositive(dict, "d")),
-    U0_(dict.get<vector>("U0")),
-    sigmaU_
-    (
-        dict.found("sigmaU") ? inputChecks::getNonNegative(dict, "sigmaU") : 0
-    ),
-    T0_
-    (
-        dict.found("T0")
-      ? inputChecks::getPositive(dict, "T0")
-      : constProps_.T0()
-    ),
+    d_(readDiameter(dict, setup.mesh)),
+    U0_(inputChecks::getVector(dict, "U0")),
+    sigmaU_(inputChecks::getNonNegativeOrDefault(dict, "sigmaU", 0)),
+    T0_(inputChecks::getPositiveOrDefault(dict, "T0", constProps_.T0())),
     vParticle_(pi*pow3(d_)/6),
     V_(0),
     meanWeight_(1)
@@ -57,7 +49,7 @@ Foam::regionFill::regionFill
     {
         inputChecks::badValue
         (
-            dict, "type", dict.get<word>("type"),
+            dict, "type", dict.lookup("type").toString().c_str(),
             "box (x and radius ranges) with axisymmetric true"
         );
     }
@@ -65,6 +57,23 @@ Foam::regionFill::regionFill
 
 
 // * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * * //
+
+Foam::scalar Foam::regionFill::readDiameter
+(
+    const dictionary& dict,
+    const polyMesh& mesh
+)
+{
+    // The whole mesh's diagonal (on every processor alike)
+    const scalar diagonal = mag(boundBox(mesh.points(), true).span());
+
+    return inputChecks::getOpen
+    (
+        dict, "d", 0, diagonal,
+        "the mesh's diagonal = " + Foam::name(diagonal) + " m"
+    );
+}
+
 
 Foam::point Foam::regionFill::uniform(const point& lo, const vector& span)
 {
@@ -98,25 +107,21 @@ void Foam::regionFill::count
 
     if (hasN)
     {
-        nParcels = label(getPositive(dict_, "nParcels"));
+        nParcels = label(getPositiveOrDefault(dict_, "nParcels", 1));
     }
 
     scalar alpha0 = 0;
     if (hasAlpha)
     {
-        alpha0 = dict_.get<scalar>("alpha0");
-        if (!(alpha0 > 0 && alpha0 < alphaMax))
-        {
-            outOfRange
-            (
-                dict_, "alpha0", alpha0, "(0, " + alphaMaxWhat + ")"
-            );
-        }
+        alpha0 = getInterval
+        (
+            dict_, "alpha0", 0, alphaMax, true, true, false, 0, alphaMaxWhat
+        );
     }
 
     if (hasW)
     {
-        W = getPositive(dict_, "nParticle");
+        W = getPositiveOrDefault(dict_, "nParticle", 1);
     }
 
     if (!hasN)
@@ -170,6 +175,7 @@ Foam::scalar Foam::regionFill::alphaLimit
 {
     const dictionary& models = cloudProps.subDict("subModels");
     // A cloud without an MPPIC layer (DEM) has no packing model
+    // (the name is checked, with its choices, by the cloud's checkInput)
     const word packing(models.getOrDefault<word>("packingModel", "none"));
 
     if (packing == "none")

@@ -16,20 +16,11 @@ Foam::autoPtr<Foam::regionFill> Foam::regionFill::New
     const cloudSetup& setup
 )
 {
-    const word fillType(dict.get<word>("type"));
+    const word fillType(inputChecks::modelName<regionFill>(dict, "type"));
 
     Info<< "    Selecting region fill " << fillType << endl;
 
     auto cstrIter = dictionaryConstructorTablePtr_->cfind(fillType);
-
-    if (!cstrIter.found())
-    {
-        inputChecks::notOneOf
-        (
-            dict, "type", fillType,
-            dictionaryConstructorTablePtr_->sortedToc()
-        );
-    }
 
     return cstrIter()(dict, setup);
 }

@@ -23,17 +23,14 @@ Foam::ZonalGravityForce<CloudType>::ZonalGravityForce
     zeroGravity_(mesh.nCells(), false)
 {
     inputChecks::rejectUnknown(this->coeffs(), {"zeroGravityZone"});
-    const word zoneName(this->coeffs().template get<word>("zeroGravityZone"));
-    const label zonei = mesh.cellZones().findZoneID(zoneName);
-
-    if (zonei < 0)
-    {
-        inputChecks::notOneOf
+    const word zoneName
+    (
+        inputChecks::getChoice
         (
-            this->coeffs(), "zeroGravityZone", zoneName,
-            mesh.cellZones().names()
-        );
-    }
+            this->coeffs(), "zeroGravityZone", mesh.cellZones().names()
+        )
+    );
+    const label zonei = mesh.cellZones().findZoneID(zoneName);
 
     for (const label celli : mesh.cellZones()[zonei])
     {

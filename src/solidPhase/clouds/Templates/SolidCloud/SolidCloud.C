@@ -40,12 +40,7 @@ using namespace inputChecks;
 //- Stop unless 0 < value < 1
 inline void checkOpenUnit(const dictionary& dict, const word& keyword)
 {
-    const scalar value = dict.get<scalar>(keyword);
-
-    if (!(value > 0 && value < 1))
-    {
-        outOfRange(dict, keyword, value, "(0, 1)");
-    }
+    getOpen(dict, keyword, 0, 1);
 }
 
 
@@ -80,14 +75,8 @@ inline void checkTimeScale(const dictionary& coeffs)
 //- Restitution and friction of one wall-interaction dictionary
 inline void checkRebound(const dictionary& dict)
 {
-    if (dict.found("e"))
-    {
-        getClosed(dict, "e", 0, 1);
-    }
-    if (dict.found("mu"))
-    {
-        getClosed(dict, "mu", 0, 1);
-    }
+    getClosedOrDefault(dict, "e", 0, 0, 1);
+    getClosedOrDefault(dict, "mu", 0, 0, 1);
 }
 
 
@@ -97,9 +86,12 @@ void checkLayer(const dictionary& props, const MPPICCloud<CloudType>*)
 {
     typedef MPPICCloud<CloudType> mppicType;
 
-    modelName<AveragingMethod<scalar>>
+    const word averaging
     (
-        props.subDict("solution"), "averagingMethod"
+        modelName<AveragingMethod<scalar>>
+        (
+            props.subDict("solution"), "averagingMethod"
+        )
     );
 
     const dictionary& models = props.subDict("subModels");
@@ -134,6 +126,18 @@ void checkLayer(const dictionary& props, const MPPICCloud<CloudType>*)
     {
         checkTimeScale(models.subDict(isotropy + "Coeffs"));
     }
+
+    // The stochastic isotropy models take exp(-dt/tau) of every component
+    // of the averages, the moment method's gradients too: a negative
+    // gradient overflows (found by validation/badKeywords' fuzz)
+    if (isotropy != "none" && averaging == "moment")
+    {
+        badValue
+        (
+            props.subDict("solution"), "averagingMethod", averaging,
+            "basic, dual or cachedDual with isotropyModel " + isotropy
+        );
+    }
 }
 
 
@@ -143,7 +147,7 @@ void checkLayer(const dictionary& props, const CollidingCloud<CloudType>*)
 {
     typedef CollidingCloud<CloudType> collidingType;
 
-    if (props.getOrDefault<bool>("axisymmetric", false))
+    if (getBoolOrDefault(props, "axisymmetric", false))
     {
         badValue
         (
@@ -167,15 +171,8 @@ void checkLayer(const dictionary& props, const CollidingCloud<CloudType>*)
 
     // Upstream takes the walls' velocity from this field, which must
     // exist; ours is the carrier's, and our wall model holds walls at rest
-    const word U(coeffs.getOrDefault<word>("U", "U"));
-    if (U != "U.gas")
-    {
-        badValue
-        (
-            coeffs, "U", U,
-            "U.gas (the solver's carrier velocity field; walls are at rest)"
-        );
-    }
+    // (U.gas: the solver's carrier velocity field; walls are at rest)
+    getChoice(coeffs, "U", {"U.gas"});
 
     const word pair(modelName<PairModel<collidingType>>(coeffs, "pairModel"));
     if (pair == PairLinearSpringDashpot<collidingType>::typeName)
@@ -236,6 +233,7 @@ const Foam::word& Foam::SolidCloud<CloudType>::checkInput
     // push the grains with the same gas
     const word coupling
     (
+        // (checked, with its choices, by the coupling's selector)
         models.getOrDefault<word>("interphaseCoupling", "none")
     );
     if (coupling != "none" && models.isDict("particleForces"))

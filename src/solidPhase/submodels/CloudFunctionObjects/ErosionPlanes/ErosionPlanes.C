@@ -209,7 +209,10 @@ Foam::ErosionPlanes<CloudType>::ErosionPlanes
     ),
     collisionless_
     (
-        this->coeffDict().template getOrDefault<bool>("collisionless", false)
+        inputChecks::getBoolOrDefault
+        (
+            this->coeffDict(), "collisionless", false
+        )
     ),
     up_(Zero),
     floor_(0),

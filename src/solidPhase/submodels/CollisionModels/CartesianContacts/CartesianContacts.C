@@ -470,11 +470,14 @@ Foam::CartesianContacts<CloudType>::CartesianContacts
     grainWall_(this->coeffDict().subDict("grainWall")),
     stepsPerContact_
     (
-        this->coeffDict().template getOrDefault<scalar>("stepsPerContact", 50)
+        inputChecks::getAtLeast(this->coeffDict(), "stepsPerContact", 5, 50)
     ),
     skin_
     (
-        this->coeffDict().template getOrDefault<scalar>("neighbourSkin", 0.2)
+        inputChecks::getInterval
+        (
+            this->coeffDict(), "neighbourSkin", 0, 1, true, false, false, 0.2
+        )
     ),
     gravity_(false),
     period_(Zero),
@@ -490,24 +493,12 @@ Foam::CartesianContacts<CloudType>::CartesianContacts
         coeffs,
         {"grainGrain", "grainWall", "stepsPerContact", "neighbourSkin"}
     );
-    if (!(stepsPerContact_ >= 5 && std::isfinite(stepsPerContact_)))
-    {
-        inputChecks::outOfRange
-        (
-            coeffs, "stepsPerContact", stepsPerContact_,
-            "[5, inf) (50 recommended)"
-        );
-    }
     if (stepsPerContact_ < 20)
     {
         WarningInFunction
             << "stepsPerContact = " << stepsPerContact_ << " in "
             << coeffs.name() << ": contacts are resolved in fewer than 20"
             << " sub-steps; 50 is recommended" << endl;
-    }
-    if (!(skin_ > 0 && skin_ <= 1))
-    {
-        inputChecks::outOfRange(coeffs, "neighbourSkin", skin_, "(0, 1]");
     }
 
     const dictionary& forces = owner.forces().dict();

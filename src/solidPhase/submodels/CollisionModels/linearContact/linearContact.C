@@ -17,26 +17,18 @@ Foam::linearContact::linearContact(const dictionary& coeffs)
     dict_(coeffs),
     kn_(inputChecks::getPositive(coeffs, "kn")),
     kt_(inputChecks::getPositive(coeffs, "kt")),
-    e_(coeffs.get<scalar>("e")),
+    e_(inputChecks::getInterval(coeffs, "e", 0, 1, true, false, true, 0)),
     mu_(inputChecks::getNonNegative(coeffs, "mu")),
-    tangentialDamping_(coeffs.getOrDefault<scalar>("tangentialDamping", 0.5)),
+    tangentialDamping_
+    (
+        inputChecks::getNonNegativeOrDefault(coeffs, "tangentialDamping", 0.5)
+    ),
     dampingFactor_(0)
 {
     inputChecks::rejectUnknown
     (
         coeffs, {"kn", "kt", "e", "mu", "tangentialDamping"}
     );
-    if (!(e_ > 0 && e_ <= 1))
-    {
-        inputChecks::outOfRange(coeffs, "e", e_, "(0, 1]");
-    }
-    if (!(tangentialDamping_ >= 0 && std::isfinite(tangentialDamping_)))
-    {
-        inputChecks::outOfRange
-        (
-            coeffs, "tangentialDamping", tangentialDamping_, "[0, inf)"
-        );
-    }
 
     const scalar lnE = std::log(e_);
     dampingFactor_ =

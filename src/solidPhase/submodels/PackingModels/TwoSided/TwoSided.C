@@ -29,15 +29,11 @@ void Foam::PackingModels::TwoSided<CloudType>::checkCoeffs
     );
     inputChecks::getClosed(coeffs, "e", 0, 1);
 
-    const scalar alphaMin = coeffs.getOrDefault<scalar>("alphaMin", 1e-4);
-    if (!(alphaMin > 0 && alphaMin < 1))
-    {
-        inputChecks::outOfRange(coeffs, "alphaMin", alphaMin, "(0, 1)");
-    }
-    if (coeffs.found("relief"))
-    {
-        inputChecks::getClosed(coeffs, "relief", 0, 1);
-    }
+    inputChecks::getInterval
+    (
+        coeffs, "alphaMin", 0, 1, true, true, false, 1e-4
+    );
+    inputChecks::getClosedOrDefault(coeffs, "relief", 0, 0, 1);
 }
 
 

@@ -30,14 +30,10 @@ inline scalar getFraction
     const scalar deflt
 )
 {
-    const scalar value = dict.getOrDefault<scalar>(keyword, deflt);
-
-    if (!(value > 0 && value <= 1))
-    {
-        inputChecks::outOfRange(dict, keyword, value, "(0, 1]");
-    }
-
-    return value;
+    return inputChecks::getInterval
+    (
+        dict, keyword, 0, 1, true, false, false, deflt
+    );
 }
 
 } // End namespace NTCHardSphereChecks
