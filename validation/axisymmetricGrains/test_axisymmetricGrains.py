@@ -40,10 +40,22 @@ turned back into the meridional plane, and are weighted radially.
    grains), interphaseCoupling oneWay, 1000 steps of 5 us.  Their heating
    rate in each fifth of the radius is the free-molecular
    pi R^2 n <c> 2 k (T_g - T_p)/(m_p c_p) (doc/physics.md 4.2, eps 0, alpha_T 1;
-   validation/freeMolecularCoupling) within 2 % (that test's tolerance;
-   measured -0.5 to -0.6 %, standard errors 0.06-0.15 %): a sum without
-   the gas's weight factor gives up to RWF = 10 times less at the outer
-   radius.
+   validation/freeMolecularCoupling) within 2 % (that test's tolerance):
+   a sum without the gas's weight factor gives up to RWF = 10 times less
+   at the outer radius.
+   With n and T_g set to the start's 1e20 m^-3 and 300 K the grains heat
+   0.5-0.6 % less, at 4-10 of the grains' standard errors.  The cause is
+   the gas, not the coupling: with radial weights the wedge's real
+   molecule count is not conserved (each clone or delete changes it by
+   a simulator's weight; doc/physics.md 6), so it walks, the same for
+   every grain (measured: from 1.006 to 0.961 n_0 over the run, mean
+   0.993), which the grains' scatter does not see.  The gas's own state,
+   n from rhoN summed over the wedge every 50 steps (trapezoid mean) and
+   T from the mean kinetic energy per molecule the log gives every step,
+   gives the expected heating factor
+   F = n/n_0 sqrt(T/T_0) (T - T_p0)/(T_0 - T_p0); the heating over F must
+   be 1 within 5 standard errors: the grains' and F's (the walk between
+   writes as a Brownian bridge off the trapezoid's chord, and the mean T).
 
 4. Placement by the initialiser, which finds the cells of all drawn points
    by walks from cell to cell (mortonLocate), on a fine
@@ -234,6 +246,7 @@ def test_weighted_coupling_heat():
         ("system/grainsInitialiseDict", "regions/cloud/nParcels", 400),
         ("system/grainsInitialiseDict", "regions/cloud/sigmaU", 0),
     ])
+    foam.set_entry(case, "system/controlDict", "writeInterval", 50)
     foam.run(case, "blockMesh")
     foam.run(case, "rarefiedMultiphaseInitialise")
     foam.run(case, "rarefiedMultiphaseFoam")
@@ -256,9 +269,40 @@ def test_weighted_coupling_heat():
         ratio.append(s.mean())
         se.append(s.std(ddof=1) / math.sqrt(len(s)))
     ratio, se = np.array(ratio), np.array(se)
+
+    # The gas the grains saw: its real molecules in the wedge at each write
+    # (0/ holds no sampled fields: the first write's stands for the first
+    # 50 steps), trapezoid mean over the run; its temperature from the
+    # mean kinetic energy per molecule the log gives at every step
+    V = foam.cell_volumes(case)
+    times, content = [0.0], []
+    for time in foam.times(case)[1:]:
+        N = (foam.read_field(os.path.join(case, time, "rhoN"), len(V))*V).sum()
+        times.append(float(time))
+        content.append(N/V.sum()/n)
+    content = np.array(content[:1] + content)
+    n_mean = np.trapz(content, times)/(times[-1] - times[0])
+    log = os.path.join(case, "log.rarefiedMultiphaseFoam")
+    T_steps = 2/3*foam.log_values(log, "Average linear kinetic energy")[:, 0]/K_B
+    T_run = T_steps.mean()
+    F = n_mean*math.sqrt(T_run/Tg)*(T_run - Tp0)/(Tg - Tp0)
+    # Standard error of F: the walk between writes (a Brownian bridge off
+    # the chord: variance jump^2/12 per interval, M intervals) and the mean
+    # T (dF/F = (1/2 + T/(T - T_p0)) dT/T; steps taken as independent)
+    jumps = np.diff(content)
+    se_walk = math.sqrt((jumps**2).mean()/(12*len(jumps)))
+    se_T = (0.5 + T_run/(T_run - Tp0))*T_steps.std(ddof=1)/T_run/math.sqrt(len(T_steps))
+    se_F = math.hypot(se_walk, se_T)
+    bound = 5*np.hypot(se, se_F)
+    off = np.abs(ratio/F - 1)
     figures = (f"heating / free-molecular by fifth of the radius {np.round(ratio, 4).tolist()} "
-               f"(limit 2 %), standard errors {np.round(se, 4).tolist()}")
-    assert _report(abs(ratio - 1).max() < 0.02, "weighted coupling heat", figures)
+               f"(limit 2 %), standard errors {np.round(se, 4).tolist()}; the gas: "
+               f"n/n0 from {content[1]:.4f} to {content[-1]:.4f}, mean {n_mean:.4f}, "
+               f"T {T_run:.2f} K, factor F = {F:.4f} (standard error {se_F:.4f}); "
+               f"heating / F - 1 {np.round(ratio/F - 1, 4).tolist()} "
+               f"(bounds {np.round(bound, 4).tolist()})")
+    assert _report(abs(ratio - 1).max() < 0.02 and (off <= bound).all(),
+                   "weighted coupling heat", figures)
 
 
 # Placement (item 4): sums over the parcels the octree search placed before

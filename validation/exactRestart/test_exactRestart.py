@@ -157,10 +157,15 @@ def coupled(dst, np_, coupling, seed=None):
     """Gas and grains: the dustCloudStream tutorial with one
     interphaseCoupling type (FreeStream inflow replaced by PatchInflow,
     whose carried fractions are written; upstream's FreeStream restarts
-    them at zero)."""
+    them at zero).  The two-way types weigh each parcel 1e6 grains: with
+    the tutorial's single grains the expected gas-grain collisions are
+    1e-7 per step and the gas is left as oneWay leaves it; at 1e6 some 90
+    collide per step and some cells are sub-cycled (up to 3 sub-steps)."""
     case = foam.copy_setup(DUST, dst)
     with open(os.path.join(case, "constant", "couplingType"), "w") as f:
         f.write(f"interphaseCoupling {coupling};\n")
+    if coupling.startswith("twoWay"):
+        _set(case, [("system/grainsInitialiseDict", "regions/cloud/nParticle", 1e6)])
     _patch_inflow(case)
     _set(case, [("constant/dsmcProperties", "randomSeed", 1)])
     return _mesh_and_fill(case, np_, seed)

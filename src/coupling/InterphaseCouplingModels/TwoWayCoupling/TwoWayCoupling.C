@@ -287,8 +287,8 @@ Foam::label Foam::TwoWayCoupling<CloudType>::subSteps
     // Beyond a million sub-steps (or an overflowing rate) the grains'
     // size and weight are outside what the coupling can resolve: stop
     // rather than convert an unbounded count
-    const scalar n =
-        std::ceil(rateMax*dt/this->owner().mesh().V()[celli]/maxCollisionsPerStep_);
+    const scalar x = rateMax*dt/this->owner().mesh().V()[celli];
+    const scalar n = std::ceil(x/maxCollisionsPerStep_);
     if (!(n <= maxSubSteps_))
     {
         FatalIOErrorInFunction(this->dict())
