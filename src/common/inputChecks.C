@@ -358,25 +358,6 @@ void Foam::inputChecks::notOneOf
 }
 
 
-void Foam::inputChecks::checkClosed
-(
-    const dictionary& dict,
-    const word& keyword,
-    const scalar value,
-    const scalar min,
-    const scalar max
-)
-{
-    if (!(value >= min && value <= max))
-    {
-        outOfRange
-        (
-            dict, keyword, value, intervalText(min, max, false, false)
-        );
-    }
-}
-
-
 Foam::scalar Foam::inputChecks::getPositive
 (
     const dictionary& dict,
