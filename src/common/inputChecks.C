@@ -246,9 +246,15 @@ bool getVectorChecked
 } // End namespace Foam
 
 
-void Foam::inputChecks::keywordRecord::start()
+void Foam::inputChecks::keywordRecord::addOption(const std::string& usage)
 {
-    recording = true;
+    argList::addBoolOption("listKeywords", usage);
+}
+
+
+void Foam::inputChecks::keywordRecord::start(const argList& args)
+{
+    recording = args.found("listKeywords");
 }
 
 

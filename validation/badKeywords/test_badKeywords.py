@@ -49,7 +49,7 @@ import sys
 import pytest
 
 from rmf import foam
-from rmf_testing import report
+from rmf_testing import report, set_in_list
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = foam.PROJECT_DIR
@@ -167,31 +167,11 @@ def rows(bases):
 
 # -- editing one entry ----------------------------------------------------------
 
-def _set_in_list(path, row, value):
-    """Set keyword in a dictionary of a list (localInteraction's patches),
-    which foamDictionary cannot address: by text, inside the block of the
-    last scope name after the list's keyword."""
-    text = open(path).read()
-    start = text.index(row.scope[-2])
-    name = re.escape(row.scope[-1])
-    block = re.compile(rf'(?:"{name}"|\b{name})\s*\{{').search(text, start)
-    end = text.index("}", block.end())
-    body = text[block.end():end]
-    pattern = re.compile(r"\b" + re.escape(row.keyword) + r"\s+[^;]*;")
-    if value is None:
-        new = pattern.sub("", body, count=1)
-    elif pattern.search(body):
-        new = pattern.sub(f"{row.keyword} {value};", body, count=1)
-    else:
-        new = body + f" {row.keyword} {value}; "
-    open(path, "w").write(text[:block.end()] + new + text[end:])
-
-
 def set_value(case, row, value):
     """Set row's keyword to value (None: remove it)."""
     path = os.path.join(case, row.file)
     if "patches" in row.scope[:-1]:
-        _set_in_list(path, row, value)
+        set_in_list(path, row.scope[-2], row.scope[-1], row.keyword, value)
     elif value is None:
         foam.remove_entry(case, row.file, row.entry)
     else:

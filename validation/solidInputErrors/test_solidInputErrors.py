@@ -11,7 +11,7 @@ import subprocess
 import pytest
 
 from rmf import foam
-from rmf_testing import run_failing
+from rmf_testing import run_failing, set_in_list
 
 TUTORIAL = os.path.join(foam.PROJECT_DIR, "tutorials", "solids", "sniderSedimentation")
 BUILD = os.path.join(foam.PROJECT_DIR, "build", "validation", "solidInputErrors")
@@ -33,17 +33,9 @@ def meshed():
 def with_entry(meshed, name, dict_path, entry, value, remove=None):
     case = foam.copy_case(meshed, os.path.join(BUILD, name))
     if "/patches/" in entry:
-        # A list entry, which foamDictionary cannot address: edit the text
-        # of the first patch's line
-        path = os.path.join(case, dict_path)
-        with open(path) as f:
-            text = f.read()
-        keyword = entry.split("/")[-1]
-        old = next(line for line in text.splitlines()
-                   if line.split() and line.split()[0] == keyword
-                   and text.index(line) > text.index("patches"))
-        with open(path, "w") as f:
-            f.write(text.replace(old, f"{keyword} {value};", 1))
+        # A dictionary of a list, which foamDictionary cannot address
+        *_, block, keyword = entry.split("/")
+        set_in_list(os.path.join(case, dict_path), "patches", block, keyword, value)
     else:
         foam.set_entry(case, dict_path, entry, value)
     if remove:

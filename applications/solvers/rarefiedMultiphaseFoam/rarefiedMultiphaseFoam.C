@@ -47,19 +47,15 @@ int main(int argc, char *argv[])
         "Solid cloud name (default grains): constant/<name>Properties"
     );
 
-    argList::addBoolOption
+    inputChecks::keywordRecord::addOption
     (
-        "listKeywords",
         "Read and check the case's set-up, print every keyword checked"
         " (dictionary, kind, valid range or choices) and stop"
     );
 
     #include "addCheckCaseOptions.H"
     #include "setRootCaseLists.H"
-    if (args.found("listKeywords"))
-    {
-        inputChecks::keywordRecord::start();
-    }
+    inputChecks::keywordRecord::start(args);
     writeGuard::skipIncomplete(args);
     #include "createTime.H"
     #include "createMesh.H"

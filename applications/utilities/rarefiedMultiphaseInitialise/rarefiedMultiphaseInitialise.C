@@ -167,18 +167,14 @@ int main(int argc, char *argv[])
         "name",
         "Solid cloud name (default grains)"
     );
-    argList::addBoolOption
+    inputChecks::keywordRecord::addOption
     (
-        "listKeywords",
         "Read and check the set-up as for initialising, print every keyword"
         " checked (dictionary, kind, valid range or choices), write nothing"
     );
 
     #include "setRootCase.H"
-    if (args.found("listKeywords"))
-    {
-        inputChecks::keywordRecord::start();
-    }
+    inputChecks::keywordRecord::start(args);
     #include "createTime.H"
     #include "createNamedMesh.H"
 

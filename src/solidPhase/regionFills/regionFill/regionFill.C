@@ -105,6 +105,8 @@ void Foam::regionFill::count
         );
     }
 
+    // (Each of the three is optional, any two given: read as optional, so
+    // that the keyword record does not list them as required)
     if (hasN)
     {
         nParcels = label(getPositiveOrDefault(dict_, "nParcels", 1));
