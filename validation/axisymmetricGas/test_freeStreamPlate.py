@@ -37,18 +37,29 @@ independent: the lag-1 correlation of the batch means is -0.02 (median over
 bins), the flow crossing the domain in 25 steps.  Per field a run fails
   - if any bin is beyond MAX_DEV = 5 (Welch's t with about 32 degrees of
     freedom: P(|t| > 5) = 2e-5 per bin, under 0.5 % for the 192 bins), or
-  - if the mean of dev^2 over the bins exceeds MAX_CHI2 = 2.5: for
+  - if the mean of dev^2 over the bins exceeds MAX_CHI2 = 2.0: for
     independent bins E[t^2] = 1.07 with a standard deviation of 0.12 for
-    the mean over 192 bins.  Measured: 0.88-1.36 for the parallel run
-    against the serial one, 1.21-1.46 for the sector's n, Ux, Ur, and
-    1.84 for its temperature, which carries an offset common to the
-    bins: the axisymmetric run is 0.7 +- 0.2 % hotter than the sector
-    averaged over the bins (+0.3 +- 0.14 % with 1.5 times the simulators
-    and 18 batches; mean dev +0.6 and +0.4), a small difference between
-    the weighted axisymmetric gas and the 3-D one (e.g. the clones that
-    never collide with their parent, CHANGELOG) that no single bin
-    resolves.  2.5 leaves room for it and still fails a bias of about
-    1.2 standard errors in every bin.
+    the mean over 192 bins; measured 0.88-1.65 (below), or
+  - for n and T (positive everywhere), if the mean over the bins of the
+    relative difference (a - b)/b is beyond MAX_OFFSET = 5 of its standard
+    error sqrt(sum (se/b)^2)/192: an offset common to the bins, which no
+    single bin resolves.
+
+The 3-D sector needs more simulators than the wedge (WEIGHT): its cells
+at the axis are as thin as the wedge's but not weighted, so at the
+wedge's count (4.5e11: 0.6 simulators per cell in the row at the axis,
+a third of the wedge's there) it ran 0.73 +- 0.08 % cooler than the wedge
+averaged over the bins (2.7 % in the row at the axis; mean dev +0.59,
+mean dev^2 1.84), the offset once admitted here as "unexplained".  It is
+the sector's own sample-size error: tripling the sector's simulators
+(1.5e11) moves its T by +0.78 +- 0.07 % and n by -0.48 +- 0.07 %,
+tripling the wedge's moves its T by only +0.10 +- 0.07 % (n +0.09 +-
+0.07 %), and the wedge against the sector at 1.5e11 differs by -0.06 +-
+0.07 % in T and +0.07 +- 0.07 % in n (mean dev^2 0.89-1.65 over the four
+fields; 1.10-1.38 with the wedge's simulators tripled too).  Measured
+on this weight, the offset check reads 9 standard errors for the old
+sector.  The parallel run against the serial one: 0.88-1.36, T offset
++0.03 +- 0.08 %.
 
 Broken by hand (not committed), the checks fail: with the cloning of
 the radial weighting off the wedge has 25 % less gas (n 68, Ux 33, Ur 31,
@@ -60,9 +71,9 @@ uncounted every step's inflow misses what FreeStream inserted; and the
 sector with upstream's full first step (randomEntryTime false) is off
 by 62 (n) in the inlet cells.
 
-Cost: about 32 s of CPU per run (20000 simulators, 1100 steps); the
-module took 111 s of wall time on 2 cores shared with other jobs (the
-wedge and the sector run side by side, then the 2-rank run).
+Cost: about 32 s of CPU per wedge run (20000 simulators, 1100 steps),
+about 125 s for the sector (60000); the wedge and the sector run side by
+side, then the 2-rank run.
 
 Account: every step the simulators that came in (the account's balance)
 equal those the FreeStream model reports inserted, nothing is lost away
@@ -96,13 +107,16 @@ N0, T0, U0 = 1e20, 300.0, 1000.0            # free stream
 K_B = 1.380649e-23
 
 MAX_DEV = 5.0       # combined standard errors, any bin
-MAX_CHI2 = 2.5      # mean of dev^2 over the bins
+MAX_CHI2 = 2.0      # mean of dev^2 over the bins
+MAX_OFFSET = 5.0    # mean relative difference of n and T, its standard errors
 
 # nEquivalentParticles: the sector has 6 times the wedge's volume and no
-# weighting; 4.5e11 gives it about as many simulators as the wedge (21000
-# against 20000 once steady), a third of the wedge's in the bins at the
-# axis and 1.7 times in those at the outer radius
-WEIGHT = {"wedge": 2.4e10, "sector30": 4.5e11, "parallel": 2.4e10}
+# weighting; 1.5e11 gives it about 3 times the wedge's simulators (60000
+# against 20000 once steady), as many as the wedge's in the bins at the
+# axis (1.9 per sector cell in the row at the axis) and 5 times in those
+# at the outer radius.  At 4.5e11 (the wedge's total) the sector's own
+# sample-size error was a -0.7 % offset in T (docstring)
+WEIGHT = {"wedge": 2.4e10, "sector30": 1.5e11, "parallel": 2.4e10}
 
 SECONDS = {}
 
@@ -164,16 +178,23 @@ def _report(ok, what, figures):
 def _check(binned, a, b):
     result = md.compare(binned[a], binned[b])
     ok = True
-    for name, (mean_a, _, se, dev) in result.items():
+    for name, (mean_a, mean_b, se, dev) in result.items():
         worst = np.unravel_index(abs(dev).argmax(), (NX, NR))
         scale = abs(mean_a).max()
         chi2 = (dev ** 2).mean()
         field_ok = abs(dev).max() < MAX_DEV and chi2 < MAX_CHI2
+        offset = ""
+        if name in ("n", "T"):
+            rel = ((mean_a - mean_b) / mean_b).mean()
+            rel_se = np.sqrt(((se / mean_b) ** 2).sum()) / len(mean_b)
+            field_ok &= abs(rel) < MAX_OFFSET * rel_se
+            offset = (f", mean relative difference {100 * rel:+.3f} +- "
+                      f"{100 * rel_se:.3f} % (limit {MAX_OFFSET:g} s.e.)")
         ok &= _report(field_ok, f"freeStreamPlate {a} vs {b} {name}",
                       f"max |dev| {abs(dev).max():.2f} (limit {MAX_DEV}) at "
                       f"(x, r) bin {worst}, mean dev {dev.mean():+.2f}, "
                       f"mean dev^2 {chi2:.2f} "
-                      f"(limit {MAX_CHI2}), se {se.min() / scale:.4f}-"
+                      f"(limit {MAX_CHI2}){offset}, se {se.min() / scale:.4f}-"
                       f"{se.max() / scale:.4f} of the field's largest value")
     return ok
 
