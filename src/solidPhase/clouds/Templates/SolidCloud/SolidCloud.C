@@ -479,6 +479,18 @@ Foam::SolidCloud<CloudType>::SolidCloud
         account_.countWeighting();
     }
 
+    // The cloud's own stream (the isotropy models' draws), seeded from
+    // randomSeed as every stream of the project, not from the processor
+    // number alone (KinematicCloud's seed)
+    this->rndGen().reset
+    (
+        randomStreams::seed
+        (
+            inputChecks::getLabelOrDefault(dict, "randomSeed", 0, 0, 2000),
+            randomStreams::grainCloud
+        )
+    );
+
     const dictionary state(restartState::read(mesh, cloudName, "solidCloud"));
     restartState::get(state, "random", this->rndGen());
     restartState::get(state, "weighting", rnd_);
