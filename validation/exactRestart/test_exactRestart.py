@@ -119,8 +119,9 @@ def snider(dst, np_, seed=None, hybrid=False):
 
 
 def _isotropy(case, model):
-    """Set the isotropy model, with the tutorial's stochasticCoeffs."""
-    coeffs = foam.get_entry(case, GRAINS, "subModels/stochasticCoeffs")
+    """Set the isotropy model, with the tutorial's coefficients (those of
+    its restartableStochastic, the same keywords as upstream's stochastic)."""
+    coeffs = foam.get_entry(case, GRAINS, "subModels/restartableStochasticCoeffs")
     _set(case, [(GRAINS, "subModels/isotropyModel", model),
                 (GRAINS, f"subModels/{model}Coeffs", coeffs)])
 
@@ -154,10 +155,8 @@ def dem(dst, np_, seed=None):
 
 
 def coupled(dst, np_, coupling, seed=None):
-    """Gas and grains: the dustCloudStream tutorial with one
-    interphaseCoupling type (FreeStream inflow replaced by PatchInflow,
-    whose carried fractions are written; upstream's FreeStream restarts
-    them at zero).  The two-way types weigh each parcel 1e6 grains: with
+    """Gas and grains: the dustCloudStream tutorial (PatchInflow, whose
+    carried fractions are written) with one interphaseCoupling type.  The two-way types weigh each parcel 1e6 grains: with
     the tutorial's single grains the expected gas-grain collisions are
     1e-7 per step and the gas is left as oneWay leaves it; at 1e6 some 90
     collide per step and some cells are sub-cycled (up to 3 sub-steps)."""
@@ -166,24 +165,8 @@ def coupled(dst, np_, coupling, seed=None):
         f.write(f"interphaseCoupling {coupling};\n")
     if coupling.startswith("twoWay"):
         _set(case, [("system/grainsInitialiseDict", "regions/cloud/nParticle", 1e6)])
-    _patch_inflow(case)
     _set(case, [("constant/dsmcProperties", "randomSeed", 1)])
     return _mesh_and_fill(case, np_, seed)
-
-
-def _patch_inflow(case):
-    """FreeStream -> PatchInflow with the same state at both open patches
-    (argon, 1e21 m^-3, the tutorial's boundaryT and boundaryU)."""
-    def inflow_value(field):
-        text = foam.dict_text(os.path.join(case, "0", field))
-        return re.search(r'"\(inlet\|outlet\)"\s*\{[^}]*value\s+uniform\s+([^;]+);',
-                         text).group(1)
-    state = (f"composition {{ Ar 1; }} n 1e21; T {inflow_value('boundaryT')};"
-             f" U {inflow_value('boundaryU')};")
-    props = "constant/dsmcProperties"
-    foam.set_entry(case, props, "InflowBoundaryModel", "PatchInflow")
-    foam.set_entry(case, props, "PatchInflowCoeffs",
-                   f"{{ inlet {{ {state} }} outlet {{ {state} }} }}")
 
 
 def wedge(dst, np_, seed=None):
@@ -220,7 +203,7 @@ FAMILIES = {
 
 
 def _upstream_isotropy(dst, np_):
-    """MPPIC with upstream's stochastic isotropy (the tutorials' choice)."""
+    """MPPIC with upstream's stochastic isotropy."""
     case = snider(dst, np_)
     _isotropy(case, "stochastic")
     return case

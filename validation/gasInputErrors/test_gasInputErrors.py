@@ -49,8 +49,11 @@ def test_negative_initial_density(meshed):
 
 
 def test_negative_free_stream_density(meshed):
+    """Upstream's FreeStream inflow (the tutorial's PatchInflow replaced)."""
     case = with_entry(meshed, "negativeFreeStream", "constant/dsmcProperties",
-                      "FreeStreamCoeffs/numberDensities/N2", "-5e19")
+                      "InflowBoundaryModel", "FreeStream")
+    foam.set_entry(case, "constant/dsmcProperties", "FreeStreamCoeffs",
+                   "{ numberDensities { N2 -5e19; } }")
     out = run_failing(case, "rarefiedMultiphaseFoam")
     for text in ("FOAM FATAL IO ERROR", "constant/dsmcProperties", "'N2'", "-5e+19",
                  "[0, inf)"):

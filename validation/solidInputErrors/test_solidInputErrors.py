@@ -57,7 +57,7 @@ CLOUD_CASES = [
     ("pSolid", "subModels/twoSidedCoeffs/particleStressModel/pSolid", "0", "(0, inf)"),
     ("wallRestitution", "subModels/localInteractionCoeffs/patches/sides/e", "1.2",
      "[0, 1]"),
-    ("collisionRestitution", "subModels/stochasticCoeffs/timeScaleModel/e", "-0.1",
+    ("collisionRestitution", "subModels/restartableStochasticCoeffs/timeScaleModel/e", "-0.1",
      "[0, 1]"),
     ("density", "constantProperties/rho0", "-2500", "(0, inf)"),
     ("specularFraction", "constantProperties/specularFraction", "1.5", "[0, 1]"),

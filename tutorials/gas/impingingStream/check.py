@@ -4,7 +4,7 @@
 """Regression checks of tutorials/gas/impingingStream (run by Allrun and by
 test_impingingStream.py); prints PASS/FAIL lines with the measured figures.
 
-1. Inflow rate (analytic).  FreeStream inserts, per face and step, the
+1. Inflow rate (analytic).  PatchInflow inserts, per face and step, the
    one-sided number flux of a drifting Maxwellian (Bird 1994, eq. 4.22):
        Gamma = n c_mp/(2 sqrt(pi)) [exp(-s^2) + sqrt(pi) s (1 + erf(s))],
    c_mp = sqrt(2 k T/m), s = (U . n_in)/c_mp, divided by nEquivalentParticles;
@@ -13,7 +13,7 @@ test_impingingStream.py); prints PASS/FAIL lines with the measured figures.
    (number of inflow faces)/(steps): the accumulators' carry.
 2. Account of simulators (exact): in every step, the simulators entering by
    the balance (present - present before + removed at patches) equal
-   FreeStream's own count of insertions.
+   PatchInflow's own count of insertions.
 3. Surface loads (reduced settings only, against a stored reference):
    normal force and heat load on the surface from fDMean and qMean, within
    the prediction interval of reference.json, made by make_reference.py from
@@ -67,10 +67,11 @@ def checks(case):
     props = "constant/dsmcProperties"
     W = float(foam.get_entry(case, props, "nEquivalentParticles"))
     m = float(foam.get_entry(case, props, "moleculeProperties/N2/mass"))
-    n = float(foam.get_entry(case, props, "FreeStreamCoeffs/numberDensities/N2"))
+    inflow = "PatchInflowCoeffs/freeStream/"
+    n = float(foam.get_entry(case, props, inflow + "n"))
+    T = float(foam.get_entry(case, props, inflow + "T"))
+    U = np.array(foam.get_entry(case, props, inflow + "U").strip("()").split(), float)
     dt = float(foam.get_entry(case, "system/controlDict", "deltaT"))
-    T = 150.0
-    U = np.array([0.0, -1500.0, 0.0])   # 0/boundaryT, 0/boundaryU on freeStream
 
     step = foam.log_values(log, "Simulators in / out this step")
     expected = sum(one_sided_flux(n, T, U, m, nrm)*A for A, nrm, _ in INFLOW)*dt/W
@@ -80,9 +81,9 @@ def checks(case):
                     f"{measured:.4f} vs analytic {expected:.4f} (tol {tol:.4f})"))
 
     # Our count of simulators entering is the balance (present now - present
-    # before + removed at patches): it equals FreeStream's own count of
+    # before + removed at patches): it equals PatchInflow's own count of
     # insertions only if no simulator left uncounted
-    inserted = foam.log_values(log, "Particles inserted")[:, 0]
+    inserted = foam.log_values(log, "Simulators inserted through freeStream")[:, 0]
     mismatch = int(np.sum(inserted != step[:, 0]))
     results.append(("account of simulators", mismatch == 0 and len(inserted) == len(step),
                     f"{mismatch} of {len(step)} steps where entered != inserted"
