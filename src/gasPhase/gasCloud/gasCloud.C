@@ -80,6 +80,59 @@ Foam::wordList Foam::gasCloudInputCheck::checkProperties
             coeffs, "relaxationCollisionNumber", 1, VGREAT, false, true, true, 0
         );
     }
+    else if
+    (
+        collision == "VariableSoftSphere"
+     || collision == "LarsenBorgnakkeVariableSoftSphere"
+    )
+    {
+        const dictionary& coeffs = dict.subDict(collision + "Coeffs");
+        const bool exchange = collision != "VariableSoftSphere";
+        wordList valid({"Tref", "alpha", "alphaPairs"});
+        if (exchange)
+        {
+            valid.append("relaxationCollisionNumber");
+            getInterval
+            (
+                coeffs, "relaxationCollisionNumber",
+                1, VGREAT, false, true, true, 0
+            );
+        }
+        rejectUnknown(coeffs, valid);
+        getPositive(coeffs, "Tref");
+
+        // The scattering exponents: every species, the pairs optional,
+        // from 1 (isotropic, VHS) to 2
+        const dictionary& alpha = coeffs.subDict("alpha");
+        for (const word& name : alpha.toc())
+        {
+            if (!species.found(name))
+            {
+                notOneOf(alpha, "alpha", name, species);
+            }
+        }
+        for (const word& name : species)
+        {
+            getClosed(alpha, name, 1, 2);
+        }
+        const dictionary pairs(coeffs.subOrEmptyDict("alphaPairs"));
+        for (const word& p : pairs.toc())
+        {
+            if (!species.found(p) || !pairs.isDict(p))
+            {
+                notOneOf(pairs, "alphaPairs", p, species);
+            }
+            const dictionary& partners = pairs.subDict(p);
+            for (const word& q : partners.toc())
+            {
+                if (!species.found(q))
+                {
+                    notOneOf(partners, p, q, species);
+                }
+                getClosed(partners, q, 1, 2);
+            }
+        }
+    }
 
     const word wall
     (

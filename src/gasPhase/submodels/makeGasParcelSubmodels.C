@@ -5,7 +5,8 @@
 
 Description
     Registers upstream's DSMC submodels (binary collision, wall interaction,
-    inflow boundary) and ours (PatchInflow) in the selection tables of
+    inflow boundary) and ours (VariableSoftSphere and its Larsen-Borgnakke
+    form, PatchInflow) in the selection tables of
     DSMCCloud<gasParcel>.
 
 \*---------------------------------------------------------------------------*/
@@ -15,6 +16,7 @@ Description
 #include "NoBinaryCollision.H"
 #include "VariableHardSphere.H"
 #include "LarsenBorgnakkeVariableHardSphere.H"
+#include "VariableSoftSphere.H"
 
 #include "MaxwellianThermal.H"
 #include "SpecularReflection.H"
@@ -36,6 +38,12 @@ namespace Foam
     makeBinaryCollisionModelType
     (
         LarsenBorgnakkeVariableHardSphere,
+        gasCloudBase
+    );
+    makeBinaryCollisionModelType(VariableSoftSphere, gasCloudBase);
+    makeBinaryCollisionModelType
+    (
+        LarsenBorgnakkeVariableSoftSphere,
         gasCloudBase
     );
 

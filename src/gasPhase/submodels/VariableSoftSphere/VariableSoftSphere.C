@@ -1,0 +1,227 @@
+/*---------------------------------------------------------------------------*\
+  rarefiedMultiphaseFoam
+  Copyright (C) 2026 The rarefiedMultiphaseFoam authors
+  SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
+\*---------------------------------------------------------------------------*/
+
+#include "VariableSoftSphere.H"
+#include "physicoChemicalConstants.H"
+#include "mathematicalConstants.H"
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+template<class CloudType>
+Foam::scalarSquareMatrix
+Foam::VariableSoftSphere<CloudType>::readAlpha() const
+{
+    // (values and names checked by gasCloud::checkInput)
+    const wordList& species = this->owner().typeIdList();
+    const dictionary& perSpecies = this->coeffDict().subDict("alpha");
+    const dictionary pairs
+    (
+        this->coeffDict().subOrEmptyDict("alphaPairs")
+    );
+
+    scalarSquareMatrix alpha(species.size());
+    forAll(species, p)
+    {
+        forAll(species, q)
+        {
+            alpha(p, q) =
+                0.5
+               *(
+                    perSpecies.get<scalar>(species[p])
+                  + perSpecies.get<scalar>(species[q])
+                );
+        }
+    }
+    for (const word& p : pairs.toc())
+    {
+        const dictionary& partners = pairs.subDict(p);
+        for (const word& q : partners.toc())
+        {
+            const label i = species.find(p);
+            const label j = species.find(q);
+            alpha(i, j) = alpha(j, i) = partners.get<scalar>(q);
+        }
+    }
+    return alpha;
+}
+
+
+template<class CloudType>
+Foam::scalar Foam::VariableSoftSphere<CloudType>::internalFraction
+(
+    const scalar zeta,
+    const scalar omega
+)
+{
+    // x^(a - 1) (1 - x)^(b - 1): a beta distribution
+    Random& rnd = this->owner().rndGen();
+    const scalar a = 0.5*zeta;
+    const scalar b = 2.5 - omega;
+
+    if (mag(a - 1) < SMALL)
+    {
+        // Its distribution function is 1 - (1 - x)^b: inverted
+        return 1 - pow(rnd.sample01<scalar>(), 1/b);
+    }
+
+    // Johnk's method: X = U^(1/a), Y = V^(1/b) conditioned on X + Y <= 1
+    // gives X/(X + Y) the beta distribution
+    while (true)
+    {
+        const scalar x = pow(rnd.sample01<scalar>(), 1/a);
+        const scalar y = pow(rnd.sample01<scalar>(), 1/b);
+        if (x + y <= 1 && x + y > 0)
+        {
+            return x/(x + y);
+        }
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+template<class CloudType>
+Foam::VariableSoftSphere<CloudType>::VariableSoftSphere
+(
+    const dictionary& dict,
+    CloudType& cloud,
+    const word& type,
+    const bool exchange
+)
+:
+    BinaryCollisionModel<CloudType>(dict, cloud, type),
+    Tref_(this->coeffDict().template get<scalar>("Tref")),
+    alpha_(readAlpha()),
+    inverseZ_
+    (
+        exchange
+      ? 1/this->coeffDict().template get<scalar>("relaxationCollisionNumber")
+      : 0
+    )
+{}
+
+
+template<class CloudType>
+Foam::VariableSoftSphere<CloudType>::VariableSoftSphere
+(
+    const dictionary& dict,
+    CloudType& cloud
+)
+:
+    VariableSoftSphere(dict, cloud, typeName, false)
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+template<class CloudType>
+Foam::scalar Foam::VariableSoftSphere<CloudType>::sigmaTcR
+(
+    const typename CloudType::parcelType& pP,
+    const typename CloudType::parcelType& pQ
+) const
+{
+    const CloudType& cloud = this->owner();
+    const auto& P = cloud.constProps(pP.typeId());
+    const auto& Q = cloud.constProps(pQ.typeId());
+
+    const scalar cR = mag(pP.U() - pQ.U());
+    if (cR < VSMALL)
+    {
+        return 0;
+    }
+
+    const scalar d = 0.5*(P.d() + Q.d());
+    const scalar omega = 0.5*(P.omega() + Q.omega());
+    const scalar mR = P.mass()*Q.mass()/(P.mass() + Q.mass());
+
+    const scalar sigmaT =
+        constant::mathematical::pi*d*d
+       *pow
+        (
+            2*constant::physicoChemical::k.value()*Tref_/(mR*cR*cR),
+            omega - 0.5
+        )
+       /exp(lgamma(2.5 - omega));
+
+    return sigmaT*cR;
+}
+
+
+template<class CloudType>
+void Foam::VariableSoftSphere<CloudType>::collide
+(
+    typename CloudType::parcelType& pP,
+    typename CloudType::parcelType& pQ
+)
+{
+    CloudType& cloud = this->owner();
+    Random& rnd = cloud.rndGen();
+
+    const label p = pP.typeId();
+    const label q = pQ.typeId();
+    const auto& P = cloud.constProps(p);
+    const auto& Q = cloud.constProps(q);
+
+    const scalar mP = P.mass();
+    const scalar mQ = Q.mass();
+    const scalar mR = mP*mQ/(mP + mQ);
+    const scalar omega = 0.5*(P.omega() + Q.omega());
+
+    vector& UP = pP.U();
+    vector& UQ = pQ.U();
+    const vector Ucm = (mP*UP + mQ*UQ)/(mP + mQ);
+    const vector cR0 = UP - UQ;
+
+    // Larsen-Borgnakke: each molecule with internal energy, in turn
+    scalar translational = 0.5*mR*magSqr(cR0);
+    auto exchange = [&](typename CloudType::parcelType& pp, const label zeta)
+    {
+        if (zeta > 0 && inverseZ_ > rnd.sample01<scalar>())
+        {
+            const scalar E = translational + pp.Ei();
+            pp.Ei() = internalFraction(zeta, omega)*E;
+            translational = E - pp.Ei();
+        }
+    };
+    if (inverseZ_ > 0)
+    {
+        exchange(pP, P.internalDegreesOfFreedom());
+        exchange(pQ, Q.internalDegreesOfFreedom());
+    }
+    const scalar cR = sqrt(2*translational/mR);
+
+    // Unit vectors: g along the pre-collision relative velocity (any
+    // direction when it is zero), e1 and e2 across it
+    const scalar cR0mag = mag(cR0);
+    vector g(1, 0, 0);
+    if (cR0mag > VSMALL)
+    {
+        g = cR0/cR0mag;
+    }
+    const direction least =
+        mag(g.x()) < mag(g.y())
+      ? (mag(g.x()) < mag(g.z()) ? 0 : 2)
+      : (mag(g.y()) < mag(g.z()) ? 1 : 2);
+    vector axis(Zero);
+    axis[least] = 1;
+    const vector e1 = normalised(g ^ axis);
+    const vector e2 = g ^ e1;
+
+    // Deflection: cos chi = 2 R^(1/alpha) - 1, azimuth uniform
+    const scalar cosChi = 2*pow(rnd.sample01<scalar>(), 1/alpha_(p, q)) - 1;
+    const scalar sinChi = sqrt(max(scalar(0), 1 - cosChi*cosChi));
+    const scalar eps = constant::mathematical::twoPi*rnd.sample01<scalar>();
+
+    const vector cRnew =
+        cR*(cosChi*g + sinChi*(cos(eps)*e1 + sin(eps)*e2));
+
+    UP = Ucm + cRnew*mQ/(mP + mQ);
+    UQ = Ucm - cRnew*mP/(mP + mQ);
+}
+
+
+// ************************************************************************* //
