@@ -412,7 +412,7 @@ def test_bad_relaxation_number(meshed):
     case = foam.copy_case(meshed, os.path.join(BUILD, "relaxation"))
     foam.set_entry(case, GAS, "BinaryCollisionModel", "LarsenBorgnakkeVariableSoftSphere")
     foam.set_entry(case, GAS, "LarsenBorgnakkeVariableSoftSphereCoeffs",
-                   f"{{ Tref 273; alpha {{ Ar 1.4; }} relaxationCollisionNumber 0.5; }}")
+                   "{ Tref 273; alpha { Ar 1.4; } relaxationCollisionNumber 0.5; }")
     out = run_failing(case, "rarefiedMultiphaseFoam")
     for text in ("FOAM FATAL IO ERROR", "constant/dsmcProperties",
                  "relaxationCollisionNumber", "0.5", "[1, inf)"):
