@@ -181,11 +181,20 @@ def observables(case):
 
 
 def reference():
-    """The stored ensemble (make_reference.py): {observable: array of runs}."""
+    """The stored ensemble (make_reference.py): the file's dictionary,
+    {observable: array of runs}, and Student's t at ALPHA for its K - 1
+    degrees of freedom."""
     with open(os.path.join(HERE, "reference.json")) as f:
         ref = json.load(f)
     names = ref["runs"][0].keys()
-    return ref, {k: np.array([run_[k] for run_ in ref["runs"]]) for k in names}
+    values = {k: np.array([run_[k] for run_ in ref["runs"]]) for k in names}
+    return ref, values, stats.t.ppf(1 - ALPHA/2, len(ref["runs"]) - 1)
+
+
+@pytest.fixture(scope="module")
+def observed(runs):
+    """observables() of each run."""
+    return {name: observables(case) for name, case in runs.items()}
 
 
 def solver_log(case):
@@ -297,7 +306,7 @@ def test_paraview(runs):
     assert not failures, failures
 
 
-def test_against_reference(runs):
+def test_against_reference(runs, observed):
     """The serial run (seed 1) and the 2-rank run against the stored
     ensemble of serial runs with seeds 2..K+1 (reference.json): each
     observable within the prediction interval
@@ -305,12 +314,11 @@ def test_against_reference(runs):
     sd the ensemble's spread, measured without the run under test (and
     without the parallel code).  A push of the jet on the grains twice
     the reference's falls outside (the figures printed give the margin)."""
-    ref, values = reference()
-    t_crit = stats.t.ppf(1 - ALPHA/2, len(ref["runs"]) - 1)
+    ref, values, t_crit = reference()
     failures = []
     for name, case in runs.items():
         assert foam.latest_time(case) == ref["time"], "reference made at another time"
-        for key, x in observables(case).items():
+        for key, x in observed[name].items():
             mean, sd = values[key].mean(), values[key].std(ddof=1)
             tol = t_crit*sd*math.sqrt(1 + 1/len(values[key]))
             ok = abs(x - mean) <= tol
@@ -322,13 +330,12 @@ def test_against_reference(runs):
     assert not failures, failures
 
 
-def test_serial_parallel_observables(runs):
+def test_serial_parallel_observables(observed):
     """Serial against 2 ranks, observable by observable: the difference of
     two independent runs within t(1 - ALPHA/2, K - 1) sd sqrt(2), sd the
     reference ensemble's spread."""
-    ref, values = reference()
-    t_crit = stats.t.ppf(1 - ALPHA/2, len(ref["runs"]) - 1)
-    s, p = (observables(runs[k]) for k in ("serial", "parallel"))
+    _, values, t_crit = reference()
+    s, p = observed["serial"], observed["parallel"]
     failures = []
     for key in s:
         tol = t_crit*values[key].std(ddof=1)*math.sqrt(2)
