@@ -246,6 +246,18 @@ bool getVectorChecked
 } // End namespace Foam
 
 
+std::string Foam::inputChecks::valueText
+(
+    const dictionary& dict,
+    const word& keyword
+)
+{
+    const entry* e = dict.findEntry(keyword, keyType::LITERAL);
+    return e ? entryText(*e) : std::string("missing");
+}
+
+
+
 void Foam::inputChecks::keywordRecord::addOption(const std::string& usage)
 {
     argList::addBoolOption("listKeywords", usage);

@@ -157,26 +157,11 @@ def cloud_file(case, time, name):
     return os.path.join(case, time, "lagrangian", "dsmc", name)
 
 
-def write_list(path, values):
-    """Replace the list of an ASCII lagrangian field file (scalars or
-    vectors)."""
-    with open(path) as f:
-        text = f.read()
-    head = text[:text.index("\n(\n", text.index("FoamFile"))]
-    head = head[:head.rstrip().rindex("\n") + 1]
-    if values.ndim == 1:
-        body = "\n".join(f"{v:.17g}" for v in values)
-    else:
-        body = "\n".join(f"({u[0]:.17g} {u[1]:.17g} {u[2]:.17g})" for u in values)
-    with open(path, "w") as f:
-        f.write(f"{head}{len(values)}\n(\n{body}\n)\n")
-
-
 def start_anisotropic(case):
     """Scale the fill's velocities about their mean: T_i -> ANISOTROPY_i T."""
     U = foam.read_list(cloud_file(case, "0", "U"))
     mean = U.mean(axis=0)
-    write_list(cloud_file(case, "0", "U"), mean + (U - mean)*np.sqrt(ANISOTROPY))
+    foam.write_list(cloud_file(case, "0", "U"), mean + (U - mean)*np.sqrt(ANISOTROPY))
 
 
 def start_drifting(case):
@@ -184,7 +169,7 @@ def start_drifting(case):
     U = foam.read_list(cloud_file(case, "0", "U"))
     species = foam.read_list(cloud_file(case, "0", "typeId")).astype(int)
     U[:, 0] += np.where(species == 0, DRIFT, -DRIFT)
-    write_list(cloud_file(case, "0", "U"), U)
+    foam.write_list(cloud_file(case, "0", "U"), U)
 
 
 def decay(case, observable):
@@ -354,7 +339,7 @@ def test_rotational_exchange(zeta):
         foam.set_entry(case, CONTROL, "deltaT", DT_LB)
         foam.set_entry(case, CONTROL, "endTime", f"{STEPS_LB*DT_LB:.6g}")
         Ei = foam.read_list(cloud_file(case, "0", "Ei"))
-        write_list(cloud_file(case, "0", "Ei"), np.zeros_like(Ei))
+        foam.write_list(cloud_file(case, "0", "Ei"), np.zeros_like(Ei))
         foam.run(case, "rarefiedMultiphaseFoam")
         return rotational_history(case, zeta)
 

@@ -32,8 +32,21 @@ Foam::gasCellAverage::gasCellAverage
     (
         gas.binaryCollision().coeffDict().getOrDefault<scalar>("Tref", 273)
     ),
-    Wg_(gas.nParticle())
+    Wg_(gas.nParticle()),
+    vibration_(gas.vibration())
 {
+    slot_.setSize(m_.size() + 1, Zero);
+    forAll(m_, typei)
+    {
+        slot_[typei + 1] =
+            slot_[typei] + vibration_.modeTheta(typei).size();
+    }
+    levels_.setSize(slot_.last());
+    for (scalarField& l : levels_)
+    {
+        l.setSize(mesh_.nCells(), Zero);
+    }
+
     using constant::mathematical::pi;
     const scalar k = constant::physicoChemical::k.value();
 
@@ -72,6 +85,10 @@ void Foam::gasCellAverage::sample(const gasCloud& gas)
         {
             c[celli] *= keep;
         }
+        for (auto& l : levels_)
+        {
+            l[celli] *= keep;
+        }
         for (const gasParcel* p : occupancy[celli])
         {
             // Radial weight factor: simulators per nParticle molecules
@@ -83,6 +100,13 @@ void Foam::gasCellAverage::sample(const gasCloud& gas)
             M += mi;
             P += mi*p->U();
             E += mi*magSqr(p->U());
+
+            const labelList& levels = p->vibLevels();
+            const labelList& mode = vibration_.mode(typei);
+            forAll(levels, k)
+            {
+                levels_[slot_[typei] + mode[k]][celli] += w*f*levels[k];
+            }
         }
         mass_[celli] = keep*mass_[celli] + w*M;
         momentum_[celli] = keep*momentum_[celli] + w*P;
@@ -100,6 +124,10 @@ void Foam::gasCellAverage::add(const gasCellAverage& step)
     {
         count_[typei] = keep*count_[typei] + w*step.count_[typei];
     }
+    forAll(levels_, i)
+    {
+        levels_[i] = keep*levels_[i] + w*step.levels_[i];
+    }
     mass_ = keep*mass_ + w*step.mass_;
     momentum_ = keep*momentum_ + w*step.momentum_;
     twiceKinetic_ = keep*twiceKinetic_ + w*step.twiceKinetic_;
@@ -112,6 +140,10 @@ void Foam::gasCellAverage::reset()
     for (auto& c : count_)
     {
         c = Zero;
+    }
+    for (auto& l : levels_)
+    {
+        l = Zero;
     }
     mass_ = Zero;
     momentum_ = Zero;
@@ -129,6 +161,10 @@ void Foam::gasCellAverage::writeState(dictionary& state) const
     restartState::put(state, "mass", mass_);
     restartState::put(state, "momentum", momentum_);
     restartState::put(state, "twiceKinetic", twiceKinetic_);
+    forAll(levels_, i)
+    {
+        restartState::put(state, "levels" + Foam::name(i), levels_[i]);
+    }
 }
 
 
@@ -136,6 +172,7 @@ bool Foam::gasCellAverage::readState(const dictionary& state)
 {
     const label nCells = mass_.size();
     List<scalarField> count(count_.size());
+    List<scalarField> levels(levels_.size());
     scalarField mass, twiceKinetic;
     vectorField momentum;
 
@@ -151,6 +188,13 @@ bool Foam::gasCellAverage::readState(const dictionary& state)
      && restartState::get(state, "mass", nCells, mass)
      && restartState::get(state, "momentum", nCells, momentum)
      && restartState::get(state, "twiceKinetic", nCells, twiceKinetic);
+    forAll(levels, i)
+    {
+        ok = ok && restartState::get
+        (
+            state, "levels" + Foam::name(i), nCells, levels[i]
+        );
+    }
     if (!ok)
     {
         return false;
@@ -161,6 +205,7 @@ bool Foam::gasCellAverage::readState(const dictionary& state)
     mass_.transfer(mass);
     momentum_.transfer(momentum);
     twiceKinetic_.transfer(twiceKinetic);
+    levels_.transfer(levels);
     return true;
 }
 
@@ -286,6 +331,86 @@ Foam::tmp<Foam::scalarField> Foam::gasCellAverage::lambda() const
         l[celli] = lambda(celli);
     }
     return tl;
+}
+
+
+Foam::scalar Foam::gasCellAverage::vibrationalDof(const label celli) const
+{
+    scalar zeta = 0;
+    forAll(m_, typei)
+    {
+        const scalar N = count_[typei][celli];
+        if (!(N > 0))
+        {
+            continue;
+        }
+        forAll(vibration_.modeTheta(typei), m)
+        {
+            zeta +=
+                N
+               *vibrationalModes::modeDof
+                (
+                    vibration_.modeTheta(typei)[m],
+                    vibration_.degeneracy(typei)[m],
+                    levels_[slot_[typei] + m][celli]/N
+                );
+        }
+    }
+    return zeta;
+}
+
+
+Foam::scalar Foam::gasCellAverage::vibrationalEnergy(const label celli) const
+{
+    scalar sum = 0;
+    forAll(m_, typei)
+    {
+        forAll(vibration_.modeTheta(typei), m)
+        {
+            sum +=
+                vibration_.modeTheta(typei)[m]
+               *levels_[slot_[typei] + m][celli];
+        }
+    }
+    return constant::physicoChemical::k.value()*sum;
+}
+
+
+Foam::tmp<Foam::scalarField> Foam::gasCellAverage::vibrationalT
+(
+    const label typei
+) const
+{
+    auto tT = tmp<scalarField>::New(mesh_.nCells(), Zero);
+    scalarField& T = tT.ref();
+    forAll(T, celli)
+    {
+        // sum zeta T = sum 2 a theta over the modes (and molecules)
+        scalar zetaT = 0;
+        scalar zeta = 0;
+        forAll(m_, s)
+        {
+            const scalar N = count_[s][celli];
+            if ((typei >= 0 && s != typei) || !(N > 0))
+            {
+                continue;
+            }
+            forAll(vibration_.modeTheta(s), m)
+            {
+                const scalar theta = vibration_.modeTheta(s)[m];
+                const scalar a = levels_[slot_[s] + m][celli]/N;
+                zetaT += N*2*a*theta;
+                zeta +=
+                    N
+                   *vibrationalModes::modeDof
+                    (
+                        theta, vibration_.degeneracy(s)[m], a
+                    );
+            }
+        }
+        T[celli] = zeta > 0 ? zetaT/zeta : 0;
+    }
+    return tT;
 }
 
 

@@ -27,6 +27,58 @@ namespace Foam
 
 // * * * * * * * * * * * * * * * Input checks  * * * * * * * * * * * * * * * //
 
+void Foam::gasCloudInputCheck::checkVibration(const dictionary& props)
+{
+    using namespace inputChecks;
+
+    const word& modesKeyword = vibrationalModes::modesKeyword;
+    const word& relaxationKeyword = vibrationalModes::relaxationKeyword;
+    if (!props.found(modesKeyword))
+    {
+        if (props.found(relaxationKeyword))
+        {
+            outOfRange
+            (
+                props, relaxationKeyword, valueText(props, relaxationKeyword),
+                "an entry only beside " + modesKeyword
+            );
+        }
+        return;
+    }
+    if (!props.isDict(modesKeyword))
+    {
+        outOfRange
+        (
+            props, modesKeyword, valueText(props, modesKeyword),
+            "a dictionary { <mode> { temperature <theta K>; degeneracy"
+            " <count>; } ... }"
+        );
+    }
+
+    const dictionary& modes = props.subDict(modesKeyword);
+    if (modes.empty())
+    {
+        outOfRange(props, modesKeyword, "{}", "one or more modes");
+    }
+    for (const word& mode : modes.toc())
+    {
+        if (!modes.isDict(mode))
+        {
+            outOfRange
+            (
+                modes, mode, valueText(modes, mode),
+                "a dictionary { temperature <theta K>; degeneracy <count>; }"
+            );
+        }
+        const dictionary& d = modes.subDict(mode);
+        rejectUnknown(d, {"temperature", "degeneracy"});
+        getPositive(d, "temperature");
+        getLabelOrDefault(d, "degeneracy", 1, 1, 10);
+    }
+    getInterval(props, relaxationKeyword, 1, VGREAT, false, true, true, 0);
+}
+
+
 Foam::wordList Foam::gasCloudInputCheck::checkProperties
 (
     const dictionary& dict
@@ -50,12 +102,18 @@ Foam::wordList Foam::gasCloudInputCheck::checkProperties
         const dictionary& props = molecules.subDict(name);
         rejectUnknown
         (
-            props, {"mass", "diameter", "internalDegreesOfFreedom", "omega"}
+            props,
+            {
+                "mass", "diameter", "internalDegreesOfFreedom", "omega",
+                vibrationalModes::modesKeyword,
+                vibrationalModes::relaxationKeyword
+            }
         );
         getPositive(props, "mass");
         getPositive(props, "diameter");
         getClosed(props, "internalDegreesOfFreedom", 0, 10);
         getClosed(props, "omega", 0.5, 1.0);
+        checkVibration(props);
     }
 
     typedef DSMCCloud<gasParcel> cloudType;
@@ -80,7 +138,27 @@ Foam::wordList Foam::gasCloudInputCheck::checkProperties
             coeffs, "relaxationCollisionNumber", 1, VGREAT, false, true, true, 0
         );
     }
-    else if
+    // Only our Larsen-Borgnakke form exchanges vibrational energy
+    const word vibrating("LarsenBorgnakkeVariableSoftSphere");
+    for (const word& name : species)
+    {
+        if
+        (
+            collision != vibrating
+         && molecules.subDict(name).found(vibrationalModes::modesKeyword)
+        )
+        {
+            FatalIOErrorInFunction(dict)
+                << "BinaryCollisionModel " << collision << " in "
+                << dict.name() << ": species " << name << " has "
+                << vibrationalModes::modesKeyword << ", which only "
+                << vibrating << " exchanges; valid choices with "
+                << "vibrational modes: (" << vibrating << ")"
+                << exit(FatalIOError);
+        }
+    }
+
+    if
     (
         collision == "VariableSoftSphere"
      || collision == "LarsenBorgnakkeVariableSoftSphere"
@@ -403,6 +481,10 @@ void Foam::gasCloud::fill(const dictionary& initialiseDict)
                     gasParcel* p =
                         new gasParcel(mesh, position, celli, Ui, Ei, typeId);
                     p->settle();
+                    if (vibration_.active())
+                    {
+                        vibration_.draw(typeId, T, rndGen(), p->vibLevels());
+                    }
                     addParticle(p);
                 }
             }
@@ -434,6 +516,86 @@ void Foam::gasCloud::setWeighting()
     }
 
     nArrived_.setSize(centres.size(), 0);
+}
+
+
+Foam::vibrationalModes Foam::gasCloud::readVibration() const
+{
+    scalarList omega(typeIdList().size());
+    forAll(omega, typei)
+    {
+        omega[typei] = constProps(typei).omega();
+    }
+    return vibrationalModes
+    (
+        particleProperties().subDict("moleculeProperties"),
+        typeIdList(),
+        omega
+    );
+}
+
+
+void Foam::gasCloud::drawMissingLevels()
+{
+    if (!vibration_.active())
+    {
+        return;
+    }
+
+    // Translational temperature of each cell from its simulators
+    const label nCells = mesh().nCells();
+    scalarField N(nCells, Zero), M(nCells, Zero), E(nCells, Zero);
+    vectorField P(nCells, Zero);
+    for (const gasParcel& p : *this)
+    {
+        const scalar m = constProps(p.typeId()).mass();
+        N[p.cell()] += 1;
+        M[p.cell()] += m;
+        P[p.cell()] += m*p.U();
+        E[p.cell()] += m*magSqr(p.U());
+    }
+
+    label nDrawn = 0;
+    for (gasParcel& p : *this)
+    {
+        if (p.vibLevels().size() == vibration_.nOscillators(p.typeId()))
+        {
+            continue;
+        }
+        const label c = p.cell();
+        const scalar T =
+            max(E[c] - magSqr(P[c])/M[c], 0)
+           /(3*constant::physicoChemical::k.value()*N[c]);
+        vibration_.draw(p.typeId(), T, rndGen(), p.vibLevels());
+        ++nDrawn;
+    }
+
+    reduce(nDrawn, sumOp<label>());
+    if (nDrawn)
+    {
+        Info<< "Vibrational levels drawn at their cell's translational"
+            << " temperature for " << nDrawn << " simulators read without"
+            << " them" << endl;
+    }
+}
+
+
+void Foam::gasCloud::addVibrationToFields()
+{
+    volScalarField& internalE =
+        const_cast<volScalarField&>(this->internalE());
+    volScalarField& iDof = const_cast<volScalarField&>(this->iDof());
+
+    const scalarField& V = mesh().cellVolumes();
+    forAll(V, celli)
+    {
+        const scalar scale = nParticle()/V[celli];
+        internalE[celli] += scale*now_->vibrationalEnergy(celli);
+        iDof[celli] += scale*now_->vibrationalDof(celli);
+    }
+
+    internalE.correctBoundaryConditions();
+    iDof.correctBoundaryConditions();
 }
 
 
@@ -501,6 +663,7 @@ Foam::gasCloud::gasCloud(const word& cloudName, const fvMesh& mesh)
 :
     gasCloudInputCheck(cloudName, mesh),
     DSMCCloud<gasParcel>(cloudName, mesh, true),
+    vibration_(readVibration()),
     account_("Simulators", mesh.boundaryMesh(), this->size()),
     randomEntryTime_
     (
@@ -510,11 +673,13 @@ Foam::gasCloud::gasCloud(const word& cloudName, const fvMesh& mesh)
             axisymmetric_.active()
         )
     ),
-    writeState_(true)
+    writeState_(true),
+    atCollisionsIndex_(-1)
 {
     seedFromCase();
     readState();
     setWeighting();
+    drawMissingLevels();
 }
 
 
@@ -527,9 +692,11 @@ Foam::gasCloud::gasCloud
 :
     gasCloudInputCheck(cloudName, mesh, initialiseDict),
     DSMCCloud<gasParcel>(cloudName, mesh, emptied(initialiseDict)),
+    vibration_(readVibration()),
     account_("Simulators", mesh.boundaryMesh(), 0),
     randomEntryTime_(false),    // the fill moves nothing
-    writeState_(false)
+    writeState_(false),
+    atCollisionsIndex_(-1)
 {
     setWeighting();
     fill(initialiseDict);
@@ -607,6 +774,65 @@ bool Foam::gasCloud::weighMove
 }
 
 
+Foam::scalar Foam::gasCloud::collisionTemperature(const label celli)
+{
+    const label index = mesh().time().timeIndex();
+    if (atCollisionsIndex_ != index)
+    {
+        if (!atCollisions_.valid())
+        {
+            atCollisions_.reset(new gasCellAverage(*this, 1));
+        }
+        atCollisions_->sample(*this);
+        atCollisionsIndex_ = index;
+    }
+    return atCollisions_->T(celli);
+}
+
+
+void Foam::gasCloud::drawInflowLevels(gasParcel& p)
+{
+    if (p.vibLevels().size() == vibration_.nOscillators(p.typeId()))
+    {
+        return;     // drawn by the inflow model itself (PatchInflow)
+    }
+
+    if (inflowT_.empty())
+    {
+        // FreeStream's patches: every plain patch
+        inflowT_.setSize(mesh().nCells(), Zero);
+        scalarField nFaces(mesh().nCells(), Zero);
+        forAll(mesh().boundaryMesh(), patchi)
+        {
+            const polyPatch& patch = mesh().boundaryMesh()[patchi];
+            if (!isType<polyPatch>(patch))
+            {
+                continue;
+            }
+            const scalarField& T = boundaryT().boundaryField()[patchi];
+            forAll(patch, facei)
+            {
+                const label celli = patch.faceCells()[facei];
+                inflowT_[celli] += T[facei];
+                nFaces[celli] += 1;
+            }
+        }
+        forAll(inflowT_, celli)
+        {
+            if (nFaces[celli] > 0)
+            {
+                inflowT_[celli] /= nFaces[celli];
+            }
+        }
+    }
+
+    vibration_.draw
+    (
+        p.typeId(), inflowT_[p.cell()], rndGen(), p.vibLevels()
+    );
+}
+
+
 void Foam::gasCloud::evolve()
 {
     const label nBefore = this->size();
@@ -624,6 +850,11 @@ void Foam::gasCloud::evolve()
     }
 
     sampleCells();
+
+    if (vibration_.active())
+    {
+        addVibrationToFields();
+    }
 
     // Inflow is not reported by upstream's model: it is the balance
     account_.closeStep(nBefore, this->size());
@@ -651,8 +882,33 @@ void Foam::gasCloud::sampleCells()
     {
         lambda_ = sinceWrite_->lambda();
         writeCellField(mesh(), "gas", "lambda", dimLength, lambda_);
+        if (vibration_.active())
+        {
+            writeVibrationalT(sinceWrite_());
+        }
         reportStepCriteria(sinceWrite_());
         sinceWrite_->reset();
+    }
+}
+
+
+void Foam::gasCloud::writeVibrationalT(const gasCellAverage& average) const
+{
+    writeCellField
+    (
+        mesh(), "gas", "vibrationalT", dimTemperature,
+        average.vibrationalT(-1)()
+    );
+    forAll(typeIdList(), typei)
+    {
+        if (vibration_.nOscillators(typei))
+        {
+            writeCellField
+            (
+                mesh(), typeIdList()[typei], "vibrationalT", dimTemperature,
+                average.vibrationalT(typei)()
+            );
+        }
     }
 }
 

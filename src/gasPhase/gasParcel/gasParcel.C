@@ -29,7 +29,8 @@ Foam::gasParcel::trackingData::trackingData(DSMCCloud<gasParcel>& cloud)
     (
         owner_.axisymmetric().active() ? &owner_.axisymmetric() : nullptr
     ),
-    randomEntry_(owner_.randomEntryTime())
+    randomEntry_(owner_.randomEntryTime()),
+    vibrating_(owner_.vibration().active())
 {}
 
 
@@ -54,6 +55,38 @@ Foam::gasCloud& Foam::gasParcel::trackingData::owner
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::scalar Foam::gasParcel::trackingData::vibrationalEnergy
+(
+    const gasParcel& p
+) const
+{
+    return owner_.vibration().energy(p.typeId(), p.vibLevels());
+}
+
+
+void Foam::gasParcel::trackingData::drawInflowLevels(gasParcel& p)
+{
+    owner_.drawInflowLevels(p);
+}
+
+
+void Foam::gasParcel::trackingData::drawWallLevels
+(
+    gasParcel& p,
+    const label patchi,
+    const label facei
+)
+{
+    owner_.vibration().draw
+    (
+        p.typeId(),
+        owner_.boundaryT().boundaryField()[patchi][facei],
+        owner_.rndGen(),
+        p.vibLevels()
+    );
+}
+
 
 bool Foam::gasParcel::trackingData::weighMove
 (

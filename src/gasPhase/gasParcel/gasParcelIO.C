@@ -7,6 +7,31 @@
 #include "gasParcel.H"
 #include "IOField.H"
 #include "Cloud.H"
+#include "DSMCCloud.H"
+#include "vibrationalModes.H"
+
+// * * * * * * * * * * * * * * * Local Functions  * * * * * * * * * * * * * //
+
+namespace
+{
+    //- Oscillators per species of the cloud c (a DSMCCloud<gasParcel>)
+    Foam::labelList oscillators(const Foam::Cloud<Foam::gasParcel>& c)
+    {
+        const auto& dc =
+            dynamic_cast<const Foam::DSMCCloud<Foam::gasParcel>&>(c);
+        return Foam::vibrationalModes::oscillators
+        (
+            dc.particleProperties().subDict("moleculeProperties"),
+            dc.typeIdList()
+        );
+    }
+
+    //- Name of the field of oscillator k
+    Foam::word levelName(const Foam::label k)
+    {
+        return "vibLevel" + Foam::name(k);
+    }
+}
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
@@ -35,6 +60,33 @@ void Foam::gasParcel::readFields(Cloud<gasParcel>& c)
         p.typeId_ = typeId[i];
         ++i;
     }
+
+    // Vibrational levels: absent files (a case started without modes)
+    // leave them empty, to be drawn by gasCloud
+    const labelList nOsc(oscillators(c));
+    const label nMax = nOsc.size() ? max(nOsc) : 0;
+    for (label k = 0; k < nMax; ++k)
+    {
+        IOobject io(c.fieldIOobject(levelName(k), IOobject::MUST_READ));
+        if (!valid || !io.typeHeaderOk<IOField<label>>(true))
+        {
+            break;
+        }
+        const IOField<label> level(io);
+        c.checkFieldIOobject(c, level);
+
+        label i = 0;
+        for (gasParcel& p : c)
+        {
+            const label n = nOsc[p.typeId_];
+            if (k < n)
+            {
+                p.vibLevels_.setSize(n);
+                p.vibLevels_[k] = level[i];
+            }
+            ++i;
+        }
+    }
 }
 
 
@@ -60,6 +112,38 @@ void Foam::gasParcel::writeFields(const Cloud<gasParcel>& c)
     U.write(n > 0);
     Ei.write(n > 0);
     typeId.write(n > 0);
+
+    const labelList nOsc(oscillators(c));
+    const label nMax = nOsc.size() ? max(nOsc) : 0;
+    for (label k = 0; k < nMax; ++k)
+    {
+        IOField<label> level
+        (
+            c.fieldIOobject(levelName(k), IOobject::NO_READ), n
+        );
+        label i = 0;
+        for (const gasParcel& p : c)
+        {
+            level[i++] = k < p.vibLevels_.size() ? p.vibLevels_[k] : 0;
+        }
+        level.write(n > 0);
+    }
+}
+
+
+// * * * * * * * * * * * * * * * IOstream Operators  * * * * * * * * * * * //
+
+Foam::Ostream& Foam::operator<<(Ostream& os, const gasParcel& p)
+{
+    os  << static_cast<const DSMCParcel<particle>&>(p);
+    if (os.format() == IOstream::ASCII)
+    {
+        os  << token::SPACE;
+    }
+    os  << p.vibLevels_;
+
+    os.check(FUNCTION_NAME);
+    return os;
 }
 
 

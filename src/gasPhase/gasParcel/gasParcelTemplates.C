@@ -10,7 +10,7 @@
 // * * * * * * * * * * * * * * * * Tracking  * * * * * * * * * * * * * * * * //
 
 template<class TrackCloudType>
-void Foam::gasParcel::enter(TrackCloudType& cloud, const trackingData& td)
+void Foam::gasParcel::enter(TrackCloudType& cloud, trackingData& td)
 {
     if (entered_)
     {
@@ -20,6 +20,11 @@ void Foam::gasParcel::enter(TrackCloudType& cloud, const trackingData& td)
                 cloud.rndGen().template sample01<scalar>();
         }
         entered_ = false;
+
+        if (td.vibrating())
+        {
+            td.drawInflowLevels(*this);
+        }
     }
 }
 
@@ -147,10 +152,23 @@ void Foam::gasParcel::hitWallPatch(TrackCloudType& cloud, trackingData& td)
 
     sampleOnWall();
 
-    const scalar energyIn = 0.5*m*magSqr(U_) + Ei_;
+    // Vibrational energy (zero without modes)
+    auto vibrational = [&]()
+    {
+        return td.vibrating() ? td.vibrationalEnergy(*this) : 0;
+    };
+
+    const scalar energyIn = 0.5*m*magSqr(U_) + Ei_ + vibrational();
     const vector momentumIn = m*U_;
+    const vector specular = U_ - 2*(U_ & nHat)*nHat;
 
     cloud.wallInteraction().correct(*this);
+
+    // A diffuse reflection accommodates the vibration to the wall
+    if (td.vibrating() && magSqr(U_ - specular) > SMALL*magSqr(specular))
+    {
+        td.drawWallLevels(*this, patchi, facei);
+    }
 
     sampleOnWall();
 
@@ -158,7 +176,8 @@ void Foam::gasParcel::hitWallPatch(TrackCloudType& cloud, trackingData& td)
     const scalar dtArea = cloud.pMesh().time().deltaTValue()*area;
 
     cloud.qBF()[patchi][facei] +=
-        rwf*cloud.nParticle()*(energyIn - (0.5*m*magSqr(U_) + Ei_))/dtArea;
+        rwf*cloud.nParticle()
+       *(energyIn - (0.5*m*magSqr(U_) + Ei_ + vibrational()))/dtArea;
     cloud.fDBF()[patchi][facei] +=
         rwf*cloud.nParticle()*(momentumIn - m*U_)/dtArea;
 }

@@ -246,6 +246,21 @@ def read_list(path):
     return values
 
 
+def write_list(path, values):
+    """Replace the list of an ASCII lagrangian field file (labels, scalars
+    or vectors), keeping its header."""
+    with open(path) as f:
+        text = f.read()
+    head = text[:text.index("\n(\n", text.index("FoamFile"))]
+    head = head[:head.rstrip().rindex("\n") + 1]
+    if values.ndim == 1:
+        body = "\n".join(f"{v:.17g}" for v in values)
+    else:
+        body = "\n".join(f"({u[0]:.17g} {u[1]:.17g} {u[2]:.17g})" for u in values)
+    with open(path, "w") as f:
+        f.write(f"{head}{len(values)}\n(\n{body}\n)\n")
+
+
 def list_size(path):
     """Number of entries of an ASCII list file of any element type (a
     parcel property, or a list per parcel such as collisionRecords*):

@@ -121,6 +121,19 @@ Foam::scalar Foam::TwoWayCoupling<CloudType>::equilibriumEi
 
 
 template<class CloudType>
+Foam::scalar Foam::TwoWayCoupling<CloudType>::vibrationalEnergy
+(
+    const gasParcel& g
+) const
+{
+    return
+        gasVibration_->active()
+      ? gasVibration_->energy(g.typeId(), g.vibLevels())
+      : 0;
+}
+
+
+template<class CloudType>
 void Foam::TwoWayCoupling<CloudType>::reemit(gasParcel& g, const partner& s)
 {
     using constant::mathematical::twoPi;
@@ -168,6 +181,10 @@ void Foam::TwoWayCoupling<CloudType>::reemit(gasParcel& g, const partner& s)
             s.U + un*n
           + ut*(rnd_.GaussNormal<scalar>()*t1 + rnd_.GaussNormal<scalar>()*t2);
         g.Ei() = equilibriumEi(zeta_[typei], s.T);
+        if (gasVibration_->active())
+        {
+            gasVibration_->draw(typei, s.T, rnd_, g.vibLevels());
+        }
     }
     else
     {
@@ -201,6 +218,7 @@ void Foam::TwoWayCoupling<CloudType>::startStep(const gasCloud& gas)
 
     Wg_ = gas.nParticle();
     gasAxisymmetric_ = &gas.axisymmetric();
+    gasVibration_ = &gas.vibration();
     gained_ = gasGain();
     counts_ = stepCounts();
     subCycled_ = false;
@@ -242,7 +260,7 @@ Foam::label Foam::TwoWayCoupling<CloudType>::collideCell
         if (ntcSelection::accept(WSigmaCr, sigmaCrMax, rnd_))
         {
             const vector c0(g.U());
-            const scalar Ei0 = g.Ei();
+            const scalar Ei0 = g.Ei() + vibrationalEnergy(g);
             reemit(g, s);
             ++nAccepted;
 
@@ -251,7 +269,11 @@ Foam::label Foam::TwoWayCoupling<CloudType>::collideCell
             const scalar m = mass_[g.typeId()];
             const vector dP(Wg*m*(g.U() - c0));
             const scalar dE =
-                Wg*(0.5*m*(magSqr(g.U()) - magSqr(c0)) + g.Ei() - Ei0);
+                Wg
+               *(
+                    0.5*m*(magSqr(g.U()) - magSqr(c0))
+                  + g.Ei() + vibrationalEnergy(g) - Ei0
+                );
             gained_.momentum += dP;
             gained_.energy += dE;
             gained_.momentumSqr += cmptSqr(dP);
@@ -428,6 +450,7 @@ Foam::TwoWayCoupling<CloudType>::TwoWayCoupling
     nCollisionsTotal_(0),
     Wg_(0),
     gasAxisymmetric_(nullptr),
+    gasVibration_(nullptr),
     gained_(),
     mass_(),
     zeta_(),

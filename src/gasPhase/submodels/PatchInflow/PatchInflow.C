@@ -5,6 +5,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "PatchInflow.H"
+#include "gasCloud.H"
 #include "inputChecks.H"
 #include "keywordChecks.H"
 #include "coordinateTable.H"
@@ -187,6 +188,8 @@ Foam::label Foam::PatchInflow<CloudType>::insertOnFace
 
     const scalar n = ip.n[facei];
     const scalar T = ip.T[facei];
+    const vibrationalModes& vibration =
+        dynamic_cast<const gasCloud&>(cloud).vibration();
     const vector& U = ip.U[facei];
 
     // How many of each species this step
@@ -271,6 +274,10 @@ Foam::label Foam::PatchInflow<CloudType>::insertOnFace
                 );
 
             cloud.addNewParcel(p, celli, c, Ei, typeId);
+            if (vibration.active())
+            {
+                vibration.draw(typeId, T, rnd, cloud.last()->vibLevels());
+            }
         }
     }
 

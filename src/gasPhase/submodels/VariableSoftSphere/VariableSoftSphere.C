@@ -81,6 +81,54 @@ Foam::scalar Foam::VariableSoftSphere<CloudType>::internalFraction
 }
 
 
+template<class CloudType>
+void Foam::VariableSoftSphere<CloudType>::vibrate
+(
+    typename CloudType::parcelType& pp,
+    const label s,
+    const label q,
+    const scalar omega,
+    scalar& translational
+)
+{
+    const vibrationalModes& modes = gas_->vibration();
+    const scalarList& theta = modes.theta(s);
+    if (theta.empty())
+    {
+        return;
+    }
+
+    Random& rnd = this->owner().rndGen();
+    const scalar T = gas_->collisionTemperature(pp.cell());
+    const scalar a = 1.5 - omega;
+    labelList& levels = pp.vibLevels();
+
+    forAll(theta, k)
+    {
+        if (modes.selection(s, q, theta[k], T) <= rnd.sample01<scalar>())
+        {
+            continue;
+        }
+
+        // Level j in 0 .. E_c/(k theta) with probability proportional to
+        // (1 - j k theta/E_c)^(3/2 - omega): uniform j, accepted by that
+        // ratio (its largest value, at j = 0, is 1)
+        const scalar e = constant::physicoChemical::k.value()*theta[k];
+        const scalar Ec = translational + levels[k]*e;
+        const label jMax = label(Ec/e);
+        label j = 0;
+        do
+        {
+            j = min(label(rnd.sample01<scalar>()*(jMax + 1)), jMax);
+        }
+        while (pow(1 - j*e/Ec, a) < rnd.sample01<scalar>());
+
+        levels[k] = j;
+        translational = Ec - j*e;
+    }
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 template<class CloudType>
@@ -100,7 +148,8 @@ Foam::VariableSoftSphere<CloudType>::VariableSoftSphere
         exchange
       ? 1/this->coeffDict().template get<scalar>("relaxationCollisionNumber")
       : 0
-    )
+    ),
+    gas_(nullptr)
 {}
 
 
@@ -189,8 +238,22 @@ void Foam::VariableSoftSphere<CloudType>::collide
     };
     if (inverseZ_ > 0)
     {
-        exchange(pP, P.internalDegreesOfFreedom());
-        exchange(pQ, Q.internalDegreesOfFreedom());
+        if (!gas_)
+        {
+            gas_ = &dynamic_cast<gasCloud&>(cloud);
+        }
+        if (gas_->vibration().active())
+        {
+            vibrate(pP, p, q, omega, translational);
+            exchange(pP, P.internalDegreesOfFreedom());
+            vibrate(pQ, q, p, omega, translational);
+            exchange(pQ, Q.internalDegreesOfFreedom());
+        }
+        else
+        {
+            exchange(pP, P.internalDegreesOfFreedom());
+            exchange(pQ, Q.internalDegreesOfFreedom());
+        }
     }
     const scalar cR = sqrt(2*translational/mR);
 

@@ -1,0 +1,314 @@
+# rarefiedMultiphaseFoam. Copyright (C) 2026 The rarefiedMultiphaseFoam authors
+# SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
+"""Vibrational energy (doc/physics.md 2.5) in the one-cell periodic gas box
+of validation/freeMolecularCoupling (testing/rmf_box.py), with the quantum
+Larsen-Borgnakke exchange of LarsenBorgnakkeVariableSoftSphere (alpha 1:
+VHS scattering).
+
+1. Heat bath of nitrogen (one mode, theta 3371 K; d 4.17e-10 m, omega
+   0.74, zeta_rot 2) at 1e21 m^-3, filled at 3000 K with every simulator
+   moved to the vibrational ground level.  Z_v = 20, Z_rot = 5.  The
+   vibrational energy per molecule E_v relaxes by the Landau-Teller law
+       dE_v/dt = (E_v*(T_tr) - E_v)/(Z_v tau_c(T_tr)),
+       E_v*(T) = k theta/(exp(theta/T) - 1),
+       tau_c(T) = 1/(4 n d^2 (pi k T_ref/m)^(1/2) (T/T_ref)^(1 - omega))
+   (tau_c: the VHS mean collision time, Bird 1994 eq. 4.64) with the
+   translational temperature the run measures.  Z_v is fitted to the run's
+   E_v(t) (least squares of the integrated law), per seed, and compared
+   with the input 20: the mean over 4 seeds within 5 standard errors of
+   the mean (from the seeds' scatter).
+   Then, at the end (the last 2 of 7 relaxation times), the gas is at
+   equipartition:
+   T_rot and T_vib (from the mean level, theta/ln(1 + 1/a)) equal T_tr, and
+   T_tr equals the temperature that shares the fill's energy between
+   translation, rotation and a harmonic oscillator, 3/2 k T + k T +
+   E_v*(T) = 3/2 k T_0 + k T_0, within 5 sigma of their thermal noise
+   (computed from the chi-square noise of the sums, not from the run).
+
+2. Water vapour at 3000 K (three modes, 2294, 5261 and 5432 K; d 4.5e-10
+   m, omega 0.75, zeta_rot 3; Z_v = 5, Z_rot = 5), 1e21 m^-3: filled at
+   equilibrium, the exchange must keep each mode's level populations on
+   the Boltzmann (geometric) distribution P(i) = (1 - q) q^i, q =
+   exp(-theta/T): chi-square of the final levels against it (levels pooled
+   so that every class expects at least 20) with a p-value above 1e-3 for
+   each mode, after about 15 exchanges per oscillator (checked: the
+   fraction of levels that differ from the start is at least 0.9 of
+   2q/(1 + q), that of independent draws).  A wrong exponent of the level
+   draw would move the populations off it.
+
+3. Bad input: a characteristic temperature <= 0, a degeneracy below 1, a
+   missing relaxation number, a relaxation number below 1 or without
+   modes, a collision model that does not exchange vibration:
+   FatalIOError naming the file, keyword, value and valid range.
+"""
+
+import math
+import os
+
+import numpy as np
+import pytest
+from scipy import integrate, optimize, stats
+
+from rmf import foam
+from rmf_box import FILL, GAS, K, V_CELL, copy_box
+from rmf_testing import run_failing
+
+BUILD = os.path.join(foam.PROJECT_DIR, "build", "validation", "vibrationalRelaxation")
+CONTROL = "system/controlDict"
+MODEL = "LarsenBorgnakkeVariableSoftSphere"
+N_SIGMA = 5.0
+T_REF = 273.0
+N_GAS = 1e21                            # [1/m^3]
+
+SPECIES = {
+    "N2": dict(mass=46.5e-27, d=4.17e-10, omega=0.74, zeta=2,
+               modes={"stretch": 3371.0}, Zv=20.0),
+    "H2O": dict(mass=2.99e-26, d=4.5e-10, omega=0.75, zeta=3,
+                modes={"bend": 2294.0, "symmetric": 5261.0, "asymmetric": 5432.0},
+                Zv=5.0),
+}
+Z_ROT = 5.0
+T0 = 3000.0                             # fill temperature [K]
+DT = 2e-7                               # [s]
+SIMULATORS_BATH, STEPS_BATH, WRITE_BATH = 50000, 1100, 20   # 7 Z_v tau_c
+K_SEEDS = 4
+FINAL_WRITES = 15                       # the last 60 us: equipartition
+SIMULATORS_EQ, STEPS_EQ = 50000, 300
+
+
+def make(name, species, seed, simulators, steps, write, extra=()):
+    """The box with one species, its modes and the Larsen-Borgnakke model,
+    filled at T0, writing every `write` steps."""
+    s = SPECIES[species]
+    case = copy_box(os.path.join(BUILD, name), "N2", N_GAS)
+    for path in ("constant/grainsProperties", "system/grainsInitialiseDict"):
+        os.remove(os.path.join(case, path))
+    if species != "N2":
+        foam.set_entry(case, GAS, f"moleculeProperties/{species}",
+                       foam.get_entry(case, GAS, "moleculeProperties/N2"))
+        foam.set_entry(case, GAS, "typeIdList", f"({species})")
+        foam.remove_entry(case, FILL, "numberDensities/N2")
+    modes = " ".join(f"{m} {{ temperature {t:g}; }}" for m, t in s["modes"].items())
+    props = f"moleculeProperties/{species}"
+    entries = (("BinaryCollisionModel", MODEL),
+                         (f"{MODEL}Coeffs", f"{{ Tref {T_REF:g}; alpha {{ {species} 1; }}"
+                                            f" relaxationCollisionNumber {Z_ROT:g}; }}"),
+                         ("nEquivalentParticles", f"{N_GAS*V_CELL/simulators:.17g}"),
+                         ("randomSeed", seed),
+                         (f"{props}/mass", s["mass"]), (f"{props}/diameter", s["d"]),
+                         (f"{props}/omega", s["omega"]),
+                         (f"{props}/internalDegreesOfFreedom", s["zeta"]),
+                         (f"{props}/vibrationalModes", f"{{ {modes} }}"),
+                         (f"{props}/vibrationalRelaxationCollisionNumber", s["Zv"]))
+    for entry, value in entries + tuple(extra):
+        foam.set_entry(case, GAS, entry, value)
+    foam.set_entry(case, FILL, f"numberDensities/{species}", f"{N_GAS:g}")
+    foam.set_entry(case, FILL, "randomSeed", seed)
+    foam.set_entry(case, FILL, "temperature", T0)
+    foam.set_entry(case, CONTROL, "deltaT", DT)
+    foam.set_entry(case, CONTROL, "endTime", f"{steps*DT:.6g}")
+    foam.set_entry(case, CONTROL, "writeInterval", write)
+    foam.run(case, "blockMesh")
+    foam.run(case, "rarefiedMultiphaseInitialise")
+    return case
+
+
+def cloud_file(case, time, name):
+    return os.path.join(case, time, "lagrangian", "dsmc", name)
+
+
+def state(case, time, species):
+    """(T_tr, mean rotational energy over k, mean level of each oscillator)
+    of the simulators at a written time."""
+    s = SPECIES[species]
+    U = foam.read_list(cloud_file(case, time, "U"))
+    Ei = foam.read_list(cloud_file(case, time, "Ei"))
+    levels = np.array([foam.read_list(cloud_file(case, time, f"vibLevel{k}"))
+                       for k in range(len(s["modes"]))])
+    T_tr = s["mass"]*U.var(axis=0).sum()/(3*K)
+    return T_tr, Ei.mean()/K, levels
+
+
+def equilibrium_level(theta, T):
+    """Mean level of a harmonic oscillator at T."""
+    return 1/math.expm1(theta/T)
+
+
+def collision_time(species, T):
+    """VHS mean collision time at T (Bird 1994 eq. 4.64) [s]."""
+    s = SPECIES[species]
+    return 1/(4*N_GAS*s["d"]**2*math.sqrt(math.pi*K*T_REF/s["mass"])
+              * (T/T_REF)**(1 - s["omega"]))
+
+
+def fit_Zv(t, T_tr, level, theta):
+    """Z_v of the Landau-Teller law integrated with the run's T_tr(t),
+    least squares against its mean level(t) (level(0) as the start)."""
+    def model(Zv):
+        def rate(time, a):
+            T = np.interp(time, t, T_tr)
+            return [(equilibrium_level(theta, T) - a[0])/(Zv*collision_time("N2", T))]
+        sol = integrate.solve_ivp(rate, (t[0], t[-1]), [level[0]], t_eval=t,
+                                  rtol=1e-8, atol=1e-12)
+        return sol.y[0]
+    res = optimize.minimize_scalar(lambda z: ((model(z) - level)**2).sum(),
+                                   bounds=(1, 200), method="bounded",
+                                   options={"xatol": 1e-4})
+    return res.x
+
+
+def heat_bath(seed):
+    """One run of the nitrogen heat bath: (times, T_tr, T_rot, mean level)
+    at every write."""
+    case = make(f"bath{seed}", "N2", seed, SIMULATORS_BATH, STEPS_BATH, WRITE_BATH)
+    path = cloud_file(case, "0", "vibLevel0")
+    foam.write_list(path, np.zeros_like(foam.read_list(path)))
+    foam.run(case, "rarefiedMultiphaseFoam")
+    out = []
+    for time in foam.times(case):
+        T_tr, e_rot, levels = state(case, time, "N2")
+        out.append((float(time), T_tr, e_rot, levels[0].mean()))
+    return np.array(out).T
+
+
+@pytest.fixture(scope="module")
+def baths():
+    from concurrent.futures import ThreadPoolExecutor
+    with ThreadPoolExecutor(2) as pool:
+        return list(pool.map(heat_bath, range(1, K_SEEDS + 1)))
+
+
+def test_relaxation_time(baths):
+    """Fitted Z_v of the Landau-Teller law against the input."""
+    theta = SPECIES["N2"]["modes"]["stretch"]
+    Zv = np.array([fit_Zv(t, T_tr, level, theta) for t, T_tr, _, level in baths])
+    Z = SPECIES["N2"]["Zv"]
+    se = Zv.std(ddof=1)/math.sqrt(len(Zv))
+    ok = abs(Zv.mean() - Z) <= N_SIGMA*se
+    print(f"\n{'PASS' if ok else 'FAIL'} N2 heat bath: fitted Z_v {Zv.mean():.3f} "
+          f"(seeds {np.round(Zv, 3)}), input {Z:g}: {100*(Zv.mean()/Z - 1):+.2f} %, "
+          f"limit {N_SIGMA:g} se = {100*N_SIGMA*se/Z:.2f} %")
+    assert ok
+
+
+def final_temperature(T_tr0, T_rot0, theta):
+    """The temperature that shares the start's energy (translation,
+    rotation, vibration at level 0) at equipartition."""
+    e = 1.5*T_tr0 + T_rot0
+    return optimize.brentq(lambda T: 2.5*T + theta*equilibrium_level(theta, T) - e,
+                           100, e)
+
+
+def test_equipartition(baths):
+    """At the end T_tr, T_rot and T_vib equal the temperature that shares
+    the energy, each within 5 sigma of its thermal noise: T sqrt(2/(3N)),
+    T sqrt(2/(zeta N)) and sqrt(a(1 + a)/N) dT_v/da (the level's variance
+    at equilibrium), for one snapshot (an average over the last writes is
+    no noisier)."""
+    theta = SPECIES["N2"]["modes"]["stretch"]
+    N = SIMULATORS_BATH
+    ok = True
+    for seed, (t, T_tr, e_rot, level) in enumerate(baths, 1):
+        Tf = final_temperature(T_tr[0], e_rot[0], theta)
+        a = level[-FINAL_WRITES:].mean()
+        T_v = theta/math.log1p(1/a)
+        dTda = theta/math.log1p(1/a)**2/(a*(1 + a))
+        values = {"T_tr": (T_tr[-FINAL_WRITES:].mean(), Tf*math.sqrt(2/(3*N))),
+                  "T_rot": (e_rot[-FINAL_WRITES:].mean(), Tf*math.sqrt(1/N)),
+                  "T_vib": (T_v, math.sqrt(a*(1 + a)/N)*dTda)}
+        dev = {k: (v - Tf)/sigma for k, (v, sigma) in values.items()}
+        good = all(abs(d) <= N_SIGMA for d in dev.values())
+        print(f"\n{'PASS' if good else 'FAIL'} N2 heat bath seed {seed}: equipartition "
+              f"at {Tf:.1f} K: " + ", ".join(
+                  f"{k} {values[k][0]:.1f} ({dev[k]:+.2f} sigma)" for k in values))
+        ok &= good
+    assert ok
+
+
+def test_equilibrium_populations():
+    """Water vapour at 3000 K: each mode's final level populations on the
+    Boltzmann distribution (chi-square p-value above 1e-3), after most
+    levels have changed."""
+    s = SPECIES["H2O"]
+    case = make("equilibrium", "H2O", 1, SIMULATORS_EQ, STEPS_EQ, STEPS_EQ)
+    foam.run(case, "rarefiedMultiphaseFoam")
+    start, end = foam.times(case)[0], foam.times(case)[-1]
+    T_tr, _, levels = state(case, end, "H2O")
+    _, _, levels0 = state(case, start, "H2O")
+    ok = True
+    for k, (mode, theta) in enumerate(s["modes"].items()):
+        q = math.exp(-theta/T0)
+        counts = np.bincount(levels[k].astype(int))
+        n = len(levels[k])
+        expected = n*(1 - q)*q**np.arange(len(counts) + 50)
+        # Classes: levels 0.. while each expects >= 20, the rest pooled
+        top = int(np.argmax(expected < 20))
+        observed = np.append(counts[:top], counts[top:].sum())
+        expect = np.append(expected[:top], n - expected[:top].sum())
+        chi2 = ((observed - expect)**2/expect).sum()
+        p = stats.chi2.sf(chi2, len(observed) - 1)
+        changed = (levels[k] != levels0[k]).mean()
+        decorrelated = 2*q/(1 + q)      # 1 - sum P(i)^2: a fresh draw differs
+        T_v = theta/math.log1p(1/levels[k].mean())
+        good = p > 1e-3 and changed > 0.9*decorrelated
+        print(f"\n{'PASS' if good else 'FAIL'} H2O {mode} ({theta:g} K) at {T0:g} K: "
+              f"chi2 {chi2:.2f} for {len(observed) - 1} dof (p {p:.3f}), "
+              f"T_vib {T_v:.0f} K, levels changed {100*changed:.1f} % (independent draws "
+              f"{100*decorrelated:.1f} %)")
+        ok &= good
+    print(f"  T_tr at the end {T_tr:.1f} K")
+    assert ok
+
+
+# Bad input: FatalIOError naming the file, keyword, value and valid range
+
+PROPS = "moleculeProperties/N2"
+BAD = [
+    ("thetaZero", f"{PROPS}/vibrationalModes/stretch/temperature", "0",
+     ("temperature", "0", "(0, inf)")),
+    ("thetaNegative", f"{PROPS}/vibrationalModes/stretch/temperature", "-3371",
+     ("temperature", "-3371", "(0, inf)")),
+    ("degeneracy", f"{PROPS}/vibrationalModes/stretch/degeneracy", "0",
+     ("degeneracy", "0", "[1, 10]")),
+    ("degeneracyFraction", f"{PROPS}/vibrationalModes/stretch/degeneracy", "1.5",
+     ("degeneracy", "1.5")),
+    ("modeNotDict", f"{PROPS}/vibrationalModes/stretch", "3371",
+     ("stretch", "3371", "temperature")),
+    ("noModes", f"{PROPS}/vibrationalModes", "{ }", ("vibrationalModes", "one or more")),
+    ("zvLow", f"{PROPS}/vibrationalRelaxationCollisionNumber", "0.5",
+     ("vibrationalRelaxationCollisionNumber", "0.5", "[1, inf)")),
+    ("model", "BinaryCollisionModel", "VariableHardSphere",
+     ("BinaryCollisionModel", "VariableHardSphere", "vibrationalModes",
+      "LarsenBorgnakkeVariableSoftSphere")),
+]
+
+
+@pytest.fixture(scope="module")
+def meshed():
+    return make("meshed", "N2", 1, 1000, 1, 1)
+
+
+@pytest.mark.parametrize("name, entry, value, texts", BAD, ids=[b[0] for b in BAD])
+def test_bad_input(meshed, name, entry, value, texts):
+    case = foam.copy_case(meshed, os.path.join(BUILD, name))
+    foam.set_entry(case, GAS, entry, value)
+    if name == "model":
+        foam.set_entry(case, GAS, "VariableHardSphereCoeffs", "{ Tref 273; }")
+    out = run_failing(case, "rarefiedMultiphaseFoam")
+    for text in ("FOAM FATAL IO ERROR", "constant/dsmcProperties") + texts:
+        assert text in out, (text, out[-1500:])
+
+
+@pytest.mark.parametrize("name", ["missingZv", "zvAlone"])
+def test_bad_relaxation_number(meshed, name):
+    """The relaxation number is required with modes, refused without."""
+    case = foam.copy_case(meshed, os.path.join(BUILD, name))
+    if name == "missingZv":
+        foam.remove_entry(case, GAS, f"{PROPS}/vibrationalRelaxationCollisionNumber")
+        texts = ("vibrationalRelaxationCollisionNumber", "missing")
+    else:
+        foam.remove_entry(case, GAS, f"{PROPS}/vibrationalModes")
+        texts = ("vibrationalRelaxationCollisionNumber", "20", "vibrationalModes")
+    out = run_failing(case, "rarefiedMultiphaseFoam")
+    for text in ("FOAM FATAL IO ERROR", "constant/dsmcProperties") + texts:
+        assert text in out, (text, out[-1500:])
