@@ -169,11 +169,12 @@ def coupled(dst, np_, coupling, seed=None):
     return _mesh_and_fill(case, np_, seed)
 
 
-def wedge(dst, np_, seed=None):
+def wedge(dst, np_, seed=None, extra=()):
     """Axisymmetric, radially weighted gas (maxRadialWeight 10) and grains
     (weighted parcels, their clone/delete stream), two-way direct coupling:
     the argon wedge of validation/axisymmetricGas at rest inside a wall,
-    with the grains of validation/axisymmetricGrains."""
+    with the grains of validation/axisymmetricGrains (extra: more entries
+    (file, entry, value))."""
     case = foam.copy_setup(GAS_WEDGE, dst)
     for sub in (GRAINS, "constant/g", "system/grainsInitialiseDict"):
         shutil.copy(os.path.join(GRAIN_WEDGE, sub), os.path.join(case, sub))
@@ -182,8 +183,24 @@ def wedge(dst, np_, seed=None):
     _set(case, [("constant/dsmcProperties", "randomSeed", 1),
                 ("system/grainsInitialiseDict", "regions/cloud/d", 1e-5),
                 ("system/grainsInitialiseDict", "regions/cloud/alpha0", 1e-6),
-                ("system/grainsInitialiseDict", "regions/cloud/nParcels", 2000)])
+                ("system/grainsInitialiseDict", "regions/cloud/nParcels", 2000)]
+         + list(extra))
     return _mesh_and_fill(case, np_, seed)
+
+
+def vibrating(dst, np_, seed=None):
+    """The wedge with vibrational levels (doc/physics.md 2.5): the argon
+    given two fictitious oscillators (400 K, degeneracy 2; Z_v 2) that
+    the fill, FreeStream's inflow, the diffuse walls, the grains'
+    re-emission and the collisions all draw, exchanged by the
+    Larsen-Borgnakke form."""
+    gas, coeffs = "constant/dsmcProperties", "LarsenBorgnakkeVariableSoftSphereCoeffs"
+    ar = "moleculeProperties/Ar"
+    return wedge(dst, np_, seed, [
+        (gas, "BinaryCollisionModel", "LarsenBorgnakkeVariableSoftSphere"),
+        (gas, coeffs, "{ Tref 273; alpha { Ar 1; } relaxationCollisionNumber 5; }"),
+        (gas, f"{ar}/vibrationalModes", "{ mode { temperature 400; degeneracy 2; } }"),
+        (gas, f"{ar}/vibrationalRelaxationCollisionNumber", 2)])
 
 
 FAMILIES = {
@@ -198,6 +215,7 @@ FAMILIES = {
     "Loth": (lambda d, n, seed=None: coupled(d, n, "Loth", seed), 5),
     "adaptive": (lambda d, n, seed=None: coupled(d, n, "adaptive", seed), 5),
     "axisymmetric": (wedge, 5),
+    "vibration": (vibrating, 5),
     "upstreamIsotropy": (lambda d, n: _upstream_isotropy(d, n), 5),
 }
 
@@ -210,7 +228,7 @@ def _upstream_isotropy(dst, np_):
 
 # Families on 2 ranks as well (DEM's cartesianContacts and the NTC box are
 # covered serially; pairCollision and the rest decompose alike)
-PARALLEL = ["gas", "mppic", "hybrid", "twoWayIndirect", "axisymmetric"]
+PARALLEL = ["gas", "mppic", "hybrid", "twoWayIndirect", "axisymmetric", "vibration"]
 
 
 def restart_pair(name, np_=1):

@@ -15,8 +15,10 @@ VHS scattering).
    (tau_c: the VHS mean collision time, Bird 1994 eq. 4.64) with the
    translational temperature the run measures.  Z_v is fitted to the run's
    E_v(t) (least squares of the integrated law), per seed, and compared
-   with the input 20: the mean over 4 seeds within 5 standard errors of
-   the mean (from the seeds' scatter).
+   with the input 20: the mean over 4 seeds within 5 standard errors, the
+   error of one fit computed from the thermal noise of the mean level
+   (fit_noise: synthetic runs of the law with the fluctuation of N
+   geometric levels, relaxing at the law's rate), not from the code.
    Then, at the end (the last 2 of 7 relaxation times), the gas is at
    equipartition:
    T_rot and T_vib (from the mean level, theta/ln(1 + 1/a)) equal T_tr, and
@@ -73,6 +75,7 @@ DT = 2e-7                               # [s]
 SIMULATORS_BATH, STEPS_BATH, WRITE_BATH = 50000, 1100, 20   # 7 Z_v tau_c
 K_SEEDS = 4
 FINAL_WRITES = 15                       # the last 60 us: equipartition
+NOISE_TRIALS = 40
 SIMULATORS_EQ, STEPS_EQ = 50000, 300
 
 
@@ -141,20 +144,43 @@ def collision_time(species, T):
               * (T/T_REF)**(1 - s["omega"]))
 
 
+def landau_teller(t, T_tr, start, theta, Zv):
+    """Mean level at times t by the Landau-Teller law with T_tr(t)."""
+    def rate(time, a):
+        T = np.interp(time, t, T_tr)
+        return [(equilibrium_level(theta, T) - a[0])/(Zv*collision_time("N2", T))]
+    sol = integrate.solve_ivp(rate, (t[0], t[-1]), [start], t_eval=t,
+                              rtol=1e-8, atol=1e-12)
+    return sol.y[0]
+
+
 def fit_Zv(t, T_tr, level, theta):
     """Z_v of the Landau-Teller law integrated with the run's T_tr(t),
     least squares against its mean level(t) (level(0) as the start)."""
-    def model(Zv):
-        def rate(time, a):
-            T = np.interp(time, t, T_tr)
-            return [(equilibrium_level(theta, T) - a[0])/(Zv*collision_time("N2", T))]
-        sol = integrate.solve_ivp(rate, (t[0], t[-1]), [level[0]], t_eval=t,
-                                  rtol=1e-8, atol=1e-12)
-        return sol.y[0]
-    res = optimize.minimize_scalar(lambda z: ((model(z) - level)**2).sum(),
-                                   bounds=(1, 200), method="bounded",
-                                   options={"xatol": 1e-4})
+    res = optimize.minimize_scalar(
+        lambda z: ((landau_teller(t, T_tr, level[0], theta, z) - level)**2).sum(),
+        bounds=(1, 200), method="bounded", options={"xatol": 1e-4})
     return res.x
+
+
+def fit_noise(t, T_tr, theta, Zv, n, trials, rng):
+    """Standard deviation of fit_Zv from the thermal noise of the mean
+    level alone, independent of the code: synthetic runs of the law plus
+    a fluctuation of the variance of N geometric levels, a (1 + a)/N (0 at
+    the start, where every level is 0), relaxing at the law's own rate
+    (an Ornstein-Uhlenbeck process, Onsager's regression), each fitted as
+    the run is."""
+    a = landau_teller(t, T_tr, 0.0, theta, Zv)
+    var = a*(1 + a)/n
+    tau = Zv*np.array([collision_time("N2", T) for T in T_tr])
+    fits = []
+    for _ in range(trials):
+        x = np.zeros_like(a)
+        for i in range(1, len(t)):
+            rho = math.exp(-(t[i] - t[i - 1])/tau[i])
+            x[i] = rho*x[i - 1] + math.sqrt(max(var[i] - rho**2*var[i - 1], 0))*rng.normal()
+        fits.append(fit_Zv(t, T_tr, a + x, theta))
+    return float(np.std(fits, ddof=1))
 
 
 def heat_bath(seed):
@@ -179,14 +205,20 @@ def baths():
 
 
 def test_relaxation_time(baths):
-    """Fitted Z_v of the Landau-Teller law against the input."""
+    """Fitted Z_v of the Landau-Teller law against the input: the mean over
+    the seeds within N_SIGMA standard errors, the error of one fit from
+    fit_noise (NOISE_TRIALS synthetic runs, fixed seed)."""
     theta = SPECIES["N2"]["modes"]["stretch"]
-    Zv = np.array([fit_Zv(t, T_tr, level, theta) for t, T_tr, _, level in baths])
     Z = SPECIES["N2"]["Zv"]
-    se = Zv.std(ddof=1)/math.sqrt(len(Zv))
+    Zv = np.array([fit_Zv(t, T_tr, level, theta) for t, T_tr, _, level in baths])
+    t, T_tr = baths[0][0], baths[0][1]
+    sd = fit_noise(t, T_tr, theta, Z, SIMULATORS_BATH, NOISE_TRIALS,
+                   np.random.default_rng(1))
+    se = sd/math.sqrt(len(Zv))
     ok = abs(Zv.mean() - Z) <= N_SIGMA*se
     print(f"\n{'PASS' if ok else 'FAIL'} N2 heat bath: fitted Z_v {Zv.mean():.3f} "
-          f"(seeds {np.round(Zv, 3)}), input {Z:g}: {100*(Zv.mean()/Z - 1):+.2f} %, "
+          f"(seeds {np.round(Zv, 3)}, their sd {Zv.std(ddof=1):.3f}), input {Z:g}: "
+          f"{100*(Zv.mean()/Z - 1):+.2f} %; one fit's noise (computed) {sd:.3f}, "
           f"limit {N_SIGMA:g} se = {100*N_SIGMA*se/Z:.2f} %")
     assert ok
 

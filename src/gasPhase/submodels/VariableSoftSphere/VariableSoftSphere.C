@@ -115,6 +115,10 @@ void Foam::VariableSoftSphere<CloudType>::vibrate
         // ratio (its largest value, at j = 0, is 1)
         const scalar e = constant::physicoChemical::k.value()*theta[k];
         const scalar Ec = translational + levels[k]*e;
+        if (!(Ec > 0))
+        {
+            continue;
+        }
         const label jMax = label(Ec/e);
         label j = 0;
         do
