@@ -26,6 +26,11 @@ VHS scattering).
    translation, rotation and a harmonic oscillator, 3/2 k T + k T +
    E_v*(T) = 3/2 k T_0 + k T_0, within 5 sigma of their thermal noise
    (computed from the chi-square noise of the sums, not from the run).
+   The sampled fields carry the vibration: internalE and iDof equal the
+   parcels' sums with the vibrational energy and degrees of freedom
+   (2 a ln(1 + 1/a) per molecule), so dsmcFields' overall temperature
+   ends at the energy-sharing temperature, and vibrationalT.gas agrees
+   with the levels.
 
 2. Water vapour at 3000 K (three modes, 2294, 5261 and 5432 K; d 4.5e-10
    m, omega 0.75, zeta_rot 3; Z_v = 5, Z_rot = 5), 1e21 m^-3: filled at
@@ -76,6 +81,9 @@ SIMULATORS_BATH, STEPS_BATH, WRITE_BATH = 50000, 1100, 20   # 7 Z_v tau_c
 K_SEEDS = 4
 FINAL_WRITES = 15                       # the last 60 us: equipartition
 NOISE_TRIALS = 40
+# internalE and iDof against the sums of the parcels: v1912's k is CODATA
+# 2014's 1.38064852e-23 J/K, K here 2019's 1.380649e-23 (3.5e-7 apart)
+FIELD_TOLERANCE = 1e-6
 SIMULATORS_EQ, STEPS_EQ = 50000, 300
 
 
@@ -254,6 +262,54 @@ def test_equipartition(baths):
               f"at {Tf:.1f} K: " + ", ".join(
                   f"{k} {values[k][0]:.1f} ({dev[k]:+.2f} sigma)" for k in values))
         ok &= good
+    assert ok
+
+
+def test_fields_include_vibration(baths):
+    """The sampled fields of seed 1's bath at every write: internalE is
+    W/V sum (E_rot + k theta i) and iDof W/V sum (zeta_rot + 2 a
+    ln(1 + 1/a)), a the cell's mean level (to FIELD_TOLERANCE: the same
+    sums, with the code's Boltzmann constant); the overall temperature dsmcFields
+    makes of them, 2 (E_thermal + internalE)/(k (3 rhoN + iDof)), is at the
+    energy-sharing temperature at the end (the mean of the last writes
+    within 5 sigma, sigma = T sqrt(2/(3N)) the translational noise of one
+    write; while the vibration is cold it is higher: zeta_v is near 0); and
+    vibrationalT.gas (the mean since the previous write) agrees with T_vib
+    of the mean level over the last writes within 5 sigma of the level's
+    noise."""
+    s = SPECIES["N2"]
+    theta = s["modes"]["stretch"]
+    case = os.path.join(BUILD, "bath1")
+    W, N = N_GAS*V_CELL/SIMULATORS_BATH, SIMULATORS_BATH
+    t, T_tr, e_rot, level = baths[0]
+    Tf = final_temperature(T_tr[0], e_rot[0], theta)
+    worst, overall = 0.0, []
+    for time in foam.times(case)[1:]:
+        def field(name):
+            return foam.read_field(os.path.join(case, time, name), 1)[0]
+        Ei = foam.read_list(cloud_file(case, time, "Ei"))
+        lv = foam.read_list(cloud_file(case, time, "vibLevel0"))
+        a = lv.mean()
+        internal = W/V_CELL*(Ei.sum() + K*theta*lv.sum())
+        dof = W/V_CELL*len(lv)*(s["zeta"] + (2*a*math.log1p(1/a) if a > 0 else 0))
+        worst = max(worst, abs(field("internalE")/internal - 1), abs(field("iDof")/dof - 1))
+        rhoN, rhoM = field("rhoN"), field("rhoM")
+        thermal = field("linearKE") - 0.5*(np.asarray(field("momentum"))**2).sum()/rhoM
+        overall.append(2*(thermal + field("internalE"))/(K*(3*rhoN + field("iDof"))))
+    overall = np.array(overall)
+    sigma = Tf*math.sqrt(2/(3*N))
+    dev_overall = (overall - Tf)/sigma
+    a_end = level[-FINAL_WRITES:].mean()
+    T_written = foam.read_field(os.path.join(case, foam.times(case)[-1], "vibrationalT.gas"), 1)[0]
+    T_levels = theta/math.log1p(1/a_end)
+    sigma_v = math.sqrt(a_end*(1 + a_end)/N)*theta/math.log1p(1/a_end)**2/(a_end*(1 + a_end))
+    ok = (worst < FIELD_TOLERANCE and abs(dev_overall[-FINAL_WRITES:].mean()) <= N_SIGMA
+          and abs(T_written - T_levels) <= N_SIGMA*sigma_v)
+    print(f"\n{'PASS' if ok else 'FAIL'} N2 heat bath fields: internalE and iDof with the "
+          f"vibration to {worst:.1e}; overall T from {overall[0]:.1f} K to "
+          f"{overall[-FINAL_WRITES:].mean():.1f} K at the end against {Tf:.1f} K "
+          f"({dev_overall[-FINAL_WRITES:].mean():+.2f} sigma); vibrationalT.gas "
+          f"{T_written:.1f} K against {T_levels:.1f} K from the levels (sigma {sigma_v:.1f})")
     assert ok
 
 
