@@ -45,3 +45,9 @@ def copy_box(dst, species="Ar", n_gas=1e20, eps=0.0, alpha=1.0, coupling="oneWay
     foam.set_entry(case, PROPS, "constantProperties/thermalAccommodation", alpha)
     foam.set_entry(case, PROPS, "subModels/interphaseCoupling", coupling)
     return case
+
+
+def cloud_file(case, time, name):
+    """Path of the gas simulators' field name (U, Ei, typeId, vibLevel0,
+    ...) at a written time."""
+    return os.path.join(case, time, "lagrangian", "dsmc", name)

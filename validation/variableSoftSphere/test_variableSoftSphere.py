@@ -73,7 +73,7 @@ import numpy as np
 import pytest
 
 from rmf import foam
-from rmf_box import FILL, GAS, K, MASS, V_CELL, copy_box
+from rmf_box import FILL, GAS, K, MASS, V_CELL, cloud_file, copy_box
 from rmf_testing import run_failing
 
 BUILD = os.path.join(foam.PROJECT_DIR, "build", "validation", "variableSoftSphere")
@@ -152,9 +152,6 @@ def make(name, model, seed, simulators, steps, species=("Ar",), diameter=None,
     foam.run(case, "rarefiedMultiphaseInitialise")
     return case
 
-
-def cloud_file(case, time, name):
-    return os.path.join(case, time, "lagrangian", "dsmc", name)
 
 
 def start_anisotropic(case):

@@ -57,7 +57,7 @@ import pytest
 from scipy import integrate, optimize, stats
 
 from rmf import foam
-from rmf_box import FILL, GAS, K, V_CELL, copy_box
+from rmf_box import FILL, GAS, K, V_CELL, cloud_file, copy_box
 from rmf_testing import run_failing
 
 BUILD = os.path.join(foam.PROJECT_DIR, "build", "validation", "vibrationalRelaxation")
@@ -123,9 +123,6 @@ def make(name, species, seed, simulators, steps, write, extra=()):
     foam.run(case, "rarefiedMultiphaseInitialise")
     return case
 
-
-def cloud_file(case, time, name):
-    return os.path.join(case, time, "lagrangian", "dsmc", name)
 
 
 def state(case, time, species):
