@@ -51,6 +51,7 @@ VHS scattering).
 
 import math
 import os
+import re
 
 import numpy as np
 import pytest
@@ -342,6 +343,37 @@ def test_equilibrium_populations():
               f"{100*decorrelated:.1f} %)")
         ok &= good
     print(f"  T_tr at the end {T_tr:.1f} K")
+    assert ok
+
+
+def test_levels_drawn_for_a_new_mode():
+    """A case filled with nitrogen's one mode, then given a second
+    (theta 1000 K) before the solver starts: the simulators are read
+    without all their levels, so every level is drawn again at the cell's
+    translational temperature (logged).  After one step the new
+    oscillator's mean level is its equilibrium at T0 within 5 sigma,
+    sigma = sqrt(a (1 + a)/N) (the mean of N geometric levels), and the
+    first keeps its equilibrium too."""
+    case = make("newMode", "N2", 1, SIMULATORS_EQ, 1, 1)
+    n = foam.list_size(cloud_file(case, "0", "U"))     # the fill's count
+    foam.set_entry(case, GAS, "moleculeProperties/N2/vibrationalModes",
+                   "{ stretch { temperature 3371; } second { temperature 1000; } }")
+    log = foam.run(case, "rarefiedMultiphaseFoam")
+    with open(log) as f:
+        drawn = re.search(r"temperature for (\d+) simulators read without them", f.read())
+    end = foam.times(case)[-1]
+    ok = drawn is not None and int(drawn.group(1)) == n
+    texts = []
+    for k, theta in enumerate((3371.0, 1000.0)):
+        levels = foam.read_list(cloud_file(case, end, f"vibLevel{k}"))
+        a, expected = levels.mean(), equilibrium_level(theta, T0)
+        sigma = math.sqrt(expected*(1 + expected)/len(levels))
+        ok &= len(levels) == n and abs(a - expected) <= N_SIGMA*sigma
+        texts.append(f"oscillator {k} ({theta:g} K) mean level {a:.4f} against "
+                     f"{expected:.4f} (5 sigma {N_SIGMA*sigma:.4f})")
+    print(f"\n{'PASS' if ok else 'FAIL'} levels drawn for "
+          f"{drawn.group(1) if drawn else 'no'} of {n} simulators read without them; "
+          + "; ".join(texts))
     assert ok
 
 

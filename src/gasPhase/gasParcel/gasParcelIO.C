@@ -6,6 +6,7 @@
 
 #include "gasParcel.H"
 #include "IOField.H"
+#include "PtrList.H"
 #include "Cloud.H"
 #include "DSMCCloud.H"
 #include "vibrationalModes.H"
@@ -61,31 +62,36 @@ void Foam::gasParcel::readFields(Cloud<gasParcel>& c)
         ++i;
     }
 
-    // Vibrational levels: absent files (a case started without modes)
-    // leave them empty, to be drawn by gasCloud
+    // Vibrational levels: if a file is absent (a case started without
+    // modes, or given more since) every level is left empty, to be drawn
+    // by gasCloud
     const labelList nOsc(oscillators(c));
     const label nMax = nOsc.size() ? max(nOsc) : 0;
+    if (!nMax)
+    {
+        return;
+    }
+    PtrList<IOField<label>> levels(nMax);
     for (label k = 0; k < nMax; ++k)
     {
         IOobject io(c.fieldIOobject(levelName(k), IOobject::MUST_READ));
         if (!valid || !io.typeHeaderOk<IOField<label>>(true))
         {
-            break;
+            return;
         }
-        const IOField<label> level(io);
-        c.checkFieldIOobject(c, level);
+        levels.set(k, new IOField<label>(io));
+        c.checkFieldIOobject(c, levels[k]);
+    }
 
-        label i = 0;
-        for (gasParcel& p : c)
+    i = 0;
+    for (gasParcel& p : c)
+    {
+        p.vibLevels_.setSize(nOsc[p.typeId_]);
+        forAll(p.vibLevels_, k)
         {
-            const label n = nOsc[p.typeId_];
-            if (k < n)
-            {
-                p.vibLevels_.setSize(n);
-                p.vibLevels_[k] = level[i];
-            }
-            ++i;
+            p.vibLevels_[k] = levels[k][i];
         }
+        ++i;
     }
 }
 
