@@ -334,28 +334,44 @@ Foam::tmp<Foam::scalarField> Foam::gasCellAverage::lambda() const
 }
 
 
-Foam::scalar Foam::gasCellAverage::vibrationalDof(const label celli) const
+void Foam::gasCellAverage::vibrationalSums
+(
+    const label celli,
+    const label typei,
+    scalar& zeta,
+    scalar& zetaT
+) const
 {
-    scalar zeta = 0;
-    forAll(m_, typei)
+    zeta = 0;
+    zetaT = 0;
+    forAll(m_, s)
     {
-        const scalar N = count_[typei][celli];
-        if (!(N > 0))
+        const scalar N = count_[s][celli];
+        if ((typei >= 0 && s != typei) || !(N > 0))
         {
             continue;
         }
-        forAll(vibration_.modeTheta(typei), m)
+        forAll(vibration_.modeTheta(s), m)
         {
+            // zeta T of a mode is 2 a theta
+            const scalar theta = vibration_.modeTheta(s)[m];
+            const scalar a = levels_[slot_[s] + m][celli]/N;
             zeta +=
                 N
                *vibrationalModes::modeDof
                 (
-                    vibration_.modeTheta(typei)[m],
-                    vibration_.degeneracy(typei)[m],
-                    levels_[slot_[typei] + m][celli]/N
+                    theta, vibration_.degeneracy(s)[m], a
                 );
+            zetaT += N*2*a*theta;
         }
     }
+}
+
+
+Foam::scalar Foam::gasCellAverage::vibrationalDof(const label celli) const
+{
+    scalar zeta, zetaT;
+    vibrationalSums(celli, -1, zeta, zetaT);
     return zeta;
 }
 
@@ -385,29 +401,8 @@ Foam::tmp<Foam::scalarField> Foam::gasCellAverage::vibrationalT
     scalarField& T = tT.ref();
     forAll(T, celli)
     {
-        // sum zeta T = sum 2 a theta over the modes (and molecules)
-        scalar zetaT = 0;
-        scalar zeta = 0;
-        forAll(m_, s)
-        {
-            const scalar N = count_[s][celli];
-            if ((typei >= 0 && s != typei) || !(N > 0))
-            {
-                continue;
-            }
-            forAll(vibration_.modeTheta(s), m)
-            {
-                const scalar theta = vibration_.modeTheta(s)[m];
-                const scalar a = levels_[slot_[s] + m][celli]/N;
-                zetaT += N*2*a*theta;
-                zeta +=
-                    N
-                   *vibrationalModes::modeDof
-                    (
-                        theta, vibration_.degeneracy(s)[m], a
-                    );
-            }
-        }
+        scalar zeta, zetaT;
+        vibrationalSums(celli, typei, zeta, zetaT);
         T[celli] = zeta > 0 ? zetaT/zeta : 0;
     }
     return tT;

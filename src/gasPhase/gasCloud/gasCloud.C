@@ -543,17 +543,8 @@ void Foam::gasCloud::drawMissingLevels()
     }
 
     // Translational temperature of each cell from its simulators
-    const label nCells = mesh().nCells();
-    scalarField N(nCells, Zero), M(nCells, Zero), E(nCells, Zero);
-    vectorField P(nCells, Zero);
-    for (const gasParcel& p : *this)
-    {
-        const scalar m = constProps(p.typeId()).mass();
-        N[p.cell()] += 1;
-        M[p.cell()] += m;
-        P[p.cell()] += m*p.U();
-        E[p.cell()] += m*magSqr(p.U());
-    }
+    gasCellAverage now(*this, 1);
+    now.sample(*this);
 
     label nDrawn = 0;
     for (gasParcel& p : *this)
@@ -562,11 +553,7 @@ void Foam::gasCloud::drawMissingLevels()
         {
             continue;
         }
-        const label c = p.cell();
-        const scalar T =
-            max(E[c] - magSqr(P[c])/M[c], 0)
-           /(3*constant::physicoChemical::k.value()*N[c]);
-        vibration_.draw(p.typeId(), T, rndGen(), p.vibLevels());
+        vibration_.draw(p.typeId(), now.T(p.cell()), rndGen(), p.vibLevels());
         ++nDrawn;
     }
 

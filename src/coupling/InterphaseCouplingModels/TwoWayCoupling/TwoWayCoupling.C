@@ -11,6 +11,7 @@
 #include "randomStreams.H"
 #include "restartState.H"
 #include "ntcSelection.H"
+#include "normalTo.H"
 #include "mathematicalConstants.H"
 #include "physicoChemicalConstants.H"
 
@@ -49,20 +50,6 @@ inline wordList withCommon(const wordList& valid)
     all.append("randomSeed");
     all.append("maxCollisionsPerStep");
     return all;
-}
-
-
-//- A unit vector normal to the unit vector a
-inline vector normalTo(const vector& a)
-{
-    // Cross with the axis least aligned with a
-    const vector axis
-    (
-        mag(a.x()) < mag(a.y())
-      ? (mag(a.x()) < mag(a.z()) ? vector(1, 0, 0) : vector(0, 0, 1))
-      : (mag(a.y()) < mag(a.z()) ? vector(0, 1, 0) : vector(0, 0, 1))
-    );
-    return normalised(a ^ axis);
 }
 
 } // End namespace TwoWayCouplingTools
@@ -137,7 +124,6 @@ template<class CloudType>
 void Foam::TwoWayCoupling<CloudType>::reemit(gasParcel& g, const partner& s)
 {
     using constant::mathematical::twoPi;
-    using TwoWayCouplingTools::normalTo;
 
     const vector w(g.U() - s.U);
     const scalar magW = mag(w);

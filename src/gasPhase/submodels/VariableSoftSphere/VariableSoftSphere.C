@@ -7,6 +7,7 @@
 #include "VariableSoftSphere.H"
 #include "physicoChemicalConstants.H"
 #include "mathematicalConstants.H"
+#include "normalTo.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -246,18 +247,11 @@ void Foam::VariableSoftSphere<CloudType>::collide
         {
             gas_ = &dynamic_cast<gasCloud&>(cloud);
         }
-        if (gas_->vibration().active())
-        {
-            vibrate(pP, p, q, omega, translational);
-            exchange(pP, P.internalDegreesOfFreedom());
-            vibrate(pQ, q, p, omega, translational);
-            exchange(pQ, Q.internalDegreesOfFreedom());
-        }
-        else
-        {
-            exchange(pP, P.internalDegreesOfFreedom());
-            exchange(pQ, Q.internalDegreesOfFreedom());
-        }
+        // (vibrate draws nothing for a species without modes)
+        vibrate(pP, p, q, omega, translational);
+        exchange(pP, P.internalDegreesOfFreedom());
+        vibrate(pQ, q, p, omega, translational);
+        exchange(pQ, Q.internalDegreesOfFreedom());
     }
     const scalar cR = sqrt(2*translational/mR);
 
@@ -269,13 +263,7 @@ void Foam::VariableSoftSphere<CloudType>::collide
     {
         g = cR0/cR0mag;
     }
-    const direction least =
-        mag(g.x()) < mag(g.y())
-      ? (mag(g.x()) < mag(g.z()) ? 0 : 2)
-      : (mag(g.y()) < mag(g.z()) ? 1 : 2);
-    vector axis(Zero);
-    axis[least] = 1;
-    const vector e1 = normalised(g ^ axis);
+    const vector e1 = normalTo(g);
     const vector e2 = g ^ e1;
 
     // Deflection: cos chi = 2 R^(1/alpha) - 1, azimuth uniform
