@@ -35,6 +35,17 @@ Foam::axisymmetricMode::axisymmetricMode
                 );
             }
         }
+        if (wedgeMesh(mesh))
+        {
+            // v1912 stops a simulator at its first wedge hit and moves
+            // parcels in the wedge's planes only
+            badValue
+            (
+                dict, "axisymmetric", "false",
+                "true on a wedge mesh (the " + phase + " moves through the"
+                " wedge's sides only in the axisymmetric mode)"
+            );
+        }
         return;
     }
 

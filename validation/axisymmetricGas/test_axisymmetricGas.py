@@ -229,10 +229,27 @@ def test_not_a_wedge():
         assert text in out, text
 
 
+def test_gas_needs_axisymmetric(meshed):
+    """The gas on the wedge without the axisymmetric mode (v1912 would stop
+    at the first simulator that hits a wedge side, with a FatalError that
+    names no input): both programs stop naming the file, the keyword and
+    its value."""
+    case = foam.copy_case(meshed, os.path.join(BUILD, "gasNotAxisymmetric"))
+    for key in ("radialExtent", "maxRadialWeight"):
+        foam.remove_entry(case, "constant/dsmcProperties", key)
+    foam.set_entry(case, "constant/dsmcProperties", "axisymmetric", "false")
+    for app in ("rarefiedMultiphaseInitialise", "rarefiedMultiphaseFoam"):
+        out = run_failing(case, app)
+        for text in ("FOAM FATAL IO ERROR", "constant/dsmcProperties", "'axisymmetric'",
+                     "false", "true on a wedge mesh"):
+            assert text in out, (app, text, out[-1500:])
+
+
 def test_grains_need_axisymmetric(meshed):
     """Grains on the wedge must be axisymmetric too (v1912 would move them in
-    the wedge's planes only), and both phases must agree: the solver stops
-    naming the keyword and the dictionaries."""
+    the wedge's planes only): the solver stops naming the keyword and the
+    dictionary; and with the grains axisymmetric and the gas not, it stops
+    on the gas's dictionary."""
     case = foam.copy_case(meshed, os.path.join(BUILD, "withGrains"))
     foam.run(case, "rarefiedMultiphaseInitialise")      # the gas alone
     snider = os.path.join(foam.PROJECT_DIR, "tutorials", "solids", "sniderSedimentation")
@@ -251,6 +268,6 @@ def test_grains_need_axisymmetric(meshed):
     for key in ("axisymmetric", "radialExtent", "maxRadialWeight"):
         foam.remove_entry(case, "constant/dsmcProperties", key)
     out = run_failing(case, "rarefiedMultiphaseFoam")
-    for text in ("FOAM FATAL IO ERROR", "'axisymmetric'", "constant/grainsProperties",
-                 "constant/dsmcProperties"):
+    for text in ("FOAM FATAL IO ERROR", "'axisymmetric'", "constant/dsmcProperties",
+                 "true on a wedge mesh"):
         assert text in out, (text, out[-1500:])

@@ -449,19 +449,6 @@ Foam::SolidCloud<CloudType>::SolidCloud
     const dictionary& dict = this->particleProperties();
     const polyMesh& mesh = rho.mesh();
 
-    if
-    (
-        !axisymmetric_.active() && axisymmetricMode::wedgeMesh(mesh)
-    )
-    {
-        inputChecks::badValue
-        (
-            dict, "axisymmetric", "false",
-            "true on a wedge mesh (v1912 would move the parcels in the"
-            " wedge's planes only)"
-        );
-    }
-
     const dictionary& injection =
         dict.subDict("subModels").subDict("injectionModels");
     if (axisymmetric_.active() && injection.size())
