@@ -1,0 +1,103 @@
+# rarefiedMultiphaseFoam. Copyright (C) 2026 The rarefiedMultiphaseFoam authors
+# SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
+"""The stability matrix's packing rows (doc/speed-accuracy.md, "Stability
+at the extremes"): a bed filled just below close packing, alpha_0 = 0.59
+against alpha_cp = 0.6, and the Harris-Crighton stress near its
+singularity, eps = 1e-12 (doc/physics.md 5.3), with the project's
+twoSided packing model, end to end on the solver.
+
+Case: the Snider tutorial's set-up (glass beads d = 0.3 mm, parcels of
+749 beads, P_s = 10 Pa, beta = 2, e = 0.85, its damping and isotropy,
+cachedDual averaging, dt = 1 ms) in a column of 5 x 5 of its cells
+(0.046 m square, 0.3 m high, 40 layers), filled from the floor to
+0.1 m at alpha_0 = 0.59 (11 790 parcels) and left to settle under
+gravity for 0.3 s, written every 0.05 s.  alpha_0 at or above alpha_cp
+is refused by the initialiser (validation/solidInputErrors).
+
+Expected outcome, both runs (written down before they were run): the
+bed is held, not blown apart or compacted through its limit.
+- Every parcel present and finite at every write, no NaN in the log.
+- The packing model's averaged volume fraction (alphaAverage.grains)
+  at most 0.68 in every cell at every write: the cell bound of the
+  Snider validation (doc/physics.md 5.3, rmf.snider), which this
+  parcel weight is set for.
+- The bed's mean alpha over the layers below 0.09 m (away from its
+  loosening top) within 0.60 +- 0.02 at 0.3 s: the Snider bed's
+  tolerance (rmf.snider BED_TOL).
+- Above 0.12 m no grains at 0.3 s (alpha < 0.01): the bed neither
+  erupts nor throws grains up.
+eps = 1e-12 makes the stress at and above alpha_cp some 1e10 times
+larger than at eps = 1e-7; the limiter of Snider's eqs. 39-41 caps the
+velocity correction a parcel receives, so the outcome must be the same.
+"""
+
+import os
+
+import numpy as np
+import pytest
+
+from rmf import foam, snider
+from rmf_testing import report
+
+TUTORIAL = os.path.join(foam.PROJECT_DIR, "tutorials", "solids", "sniderSedimentation")
+BUILD = os.path.join(foam.PROJECT_DIR, "build", "validation", "packingExtremes")
+PROPS = "constant/grainsProperties"
+INIT = "system/grainsInitialiseDict"
+SIDE, CELLS, FILL_TOP = 0.046, 5, 0.1
+ALPHA0, END = 0.59, 0.3
+BED_BELOW, CLEAR_ABOVE = 0.09, 0.12
+
+
+def make_case(name, eps):
+    case = foam.copy_setup(TUTORIAL, os.path.join(BUILD, name))
+    mesh = os.path.join(case, "system", "blockMeshDict")
+    with open(mesh) as f:
+        text = f.read()
+    text = text.replace("0.138", f"{SIDE:g}").replace("(15 15 40)", f"({CELLS} {CELLS} 40)")
+    with open(mesh, "w") as f:
+        f.write(text)
+    region = "regions/column/"
+    foam.set_entry(case, INIT, region + "max", f"({SIDE:g} {SIDE:g} {FILL_TOP:g})")
+    foam.remove_entry(case, INIT, region + "nParcels")
+    foam.set_entry(case, INIT, region + "alpha0", ALPHA0)
+    foam.set_entry(case, PROPS, "subModels/twoSidedCoeffs/particleStressModel/eps", eps)
+    foam.set_entry(case, "system/controlDict", "endTime", END)
+    foam.run(case, "blockMesh")
+    foam.run(case, "rarefiedMultiphaseInitialise")
+    foam.run(case, "rarefiedMultiphaseFoam")
+    return case
+
+
+@pytest.mark.parametrize("eps", [1e-7, 1e-12])
+def test_bed_just_below_close_packing(eps):
+    case = make_case(f"eps{eps:g}", eps)
+    times = foam.times(case)
+    n0 = snider.n_parcels(case, times[0])
+    finite, counts, averaged = True, [], []
+    for t in times:
+        lag = os.path.join(case, t, "lagrangian", "grains")
+        U = foam.read_list(os.path.join(lag, "U"))
+        finite &= bool(np.all(np.isfinite(U)))
+        counts.append(snider.n_parcels(case, t))
+        if t != times[0]:
+            averaged.append(snider.averaged_max(case, t))
+    finite &= "nan" not in open(os.path.join(case, "log.rarefiedMultiphaseFoam")).read().lower()
+    ok_n = report(f"eps {eps:g}: parcels kept, finite", finite and set(counts) == {n0},
+                  f"{n0} parcels at every one of {len(times)} writes"
+                  if set(counts) == {n0} else f"counts {counts}")
+
+    ok_cell = report(f"eps {eps:g}: averaged alpha at most {snider.AVERAGED_CELL_BOUND:.2f}",
+                     None not in averaged and max(averaged) <= snider.AVERAGED_CELL_BOUND,
+                     "largest per write " + ", ".join(f"{a:.3f}" if a is not None else
+                                                      "not written" for a in averaged))
+
+    heights, index = snider.layers(case)
+    alpha, _ = snider.profile(case, times[-1], heights, index)
+    bed = float(alpha[heights < BED_BELOW].mean())
+    ok_bed = report(f"eps {eps:g}: bed mean alpha below {BED_BELOW} m within 0.60 +- "
+                    f"{snider.BED_TOL}", abs(bed - snider.ALPHA_PACKED) <= snider.BED_TOL,
+                    f"{bed:.4f} at {times[-1]} s (filled at {ALPHA0})")
+    top = float(alpha[heights > CLEAR_ABOVE].max())
+    ok_top = report(f"eps {eps:g}: nothing above {CLEAR_ABOVE} m", top < snider.CLEAR_MAX,
+                    f"largest layer alpha {top:.2g}")
+    assert ok_n and ok_cell and ok_bed and ok_top
