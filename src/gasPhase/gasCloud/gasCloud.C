@@ -24,6 +24,8 @@ namespace Foam
     defineTypeNameAndDebug(gasCloud, 0);
 }
 
+constexpr Foam::scalar Foam::gasCloud::fastShareLimit;
+
 
 // * * * * * * * * * * * * * * * Input checks  * * * * * * * * * * * * * * * //
 
@@ -907,24 +909,16 @@ void Foam::gasCloud::reportStepCriteria(const gasCellAverage& average) const
     const scalar dt = mesh().time().deltaTValue();
     const pointField& points = mesh().points();
     const Vector<label>& geometric = mesh().geometricD();
+    const bool weighted = axisymmetric_.weighted();
 
     scalar collisionMax = 0;
     scalar transitMax = 0;
+    scalar fastMax = 0;
     label collisionCells = 0;
     label transitCells = 0;
+    label fastCells = 0;
     forAll(mesh().cells(), celli)
     {
-        const scalar lambda = average.lambda(celli);
-        const scalar R = average.R(celli);
-        const scalar T = average.T(celli);
-        if (!(lambda > 0 && R > 0 && T > 0))
-        {
-            continue;       // no gas sampled here
-        }
-
-        const scalar meanSpeed = std::sqrt(8*R*T/pi);
-        const scalar collision = dt*meanSpeed/lambda;
-
         // Smallest extent of the cell in the directions the gas moves in
         const boundBox box(points, mesh().cellPoints()[celli], false);
         scalar h = GREAT;
@@ -935,6 +929,37 @@ void Foam::gasCloud::reportStepCriteria(const gasCellAverage& average) const
                 h = min(h, box.span()[d]);
             }
         }
+
+        // Share of the cell's kinetic energy carried by the simulators now
+        // in it that cross more than the cell in a step: a fast beam
+        // through a slower gas, which the cell's mean state hides
+        scalar fast = 0;
+        scalar all = 0;
+        for (const gasParcel* p : cellOccupancy()[celli])
+        {
+            const scalar e =
+                (weighted ? axisymmetric_.weightAt(p->position()) : 1)
+               *constProps(p->typeId()).mass()*magSqr(p->U());
+            all += e;
+            if (mag(p->U())*dt > h)
+            {
+                fast += e;
+            }
+        }
+        const scalar fastShare = all > 0 ? fast/all : 0;
+        fastMax = max(fastMax, fastShare);
+        fastCells += (fastShare > fastShareLimit);
+
+        const scalar lambda = average.lambda(celli);
+        const scalar R = average.R(celli);
+        const scalar T = average.T(celli);
+        if (!(lambda > 0 && R > 0 && T > 0))
+        {
+            continue;       // no gas sampled here
+        }
+
+        const scalar meanSpeed = std::sqrt(8*R*T/pi);
+        const scalar collision = dt*meanSpeed/lambda;
         const scalar transit =
             (mag(average.U(celli)) + 2*std::sqrt(2*R*T))*dt/h;
 
@@ -945,22 +970,30 @@ void Foam::gasCloud::reportStepCriteria(const gasCellAverage& average) const
     }
     reduce(collisionMax, maxOp<scalar>());
     reduce(transitMax, maxOp<scalar>());
+    reduce(fastMax, maxOp<scalar>());
     reduce(collisionCells, sumOp<label>());
     reduce(transitCells, sumOp<label>());
+    reduce(fastCells, sumOp<label>());
 
     Info<< "Gas step criteria since the last write: deltaT/(mean collision"
         << " time) largest " << collisionMax << " (" << collisionCells
         << " cells above 1), cell transit (|U| + 2 c_mp) deltaT/h largest "
-        << transitMax << " (" << transitCells << " cells above 1)" << endl;
+        << transitMax << " (" << transitCells << " cells above 1);"
+        << " share of a cell's kinetic energy in simulators crossing more"
+        << " than the cell largest " << fastMax << " (" << fastCells
+        << " cells above " << fastShareLimit << ")" << endl;
 
-    if (collisionCells || transitCells)
+    if (collisionCells || transitCells || fastCells)
     {
         WarningInFunction
             << "deltaT " << dt << " s is too long for the gas in "
             << collisionCells << " cells (deltaT above the mean collision"
-            << " time, up to " << collisionMax << " times) and "
+            << " time, up to " << collisionMax << " times), "
             << transitCells << " cells (simulators cross more than the cell"
-            << " in a step, up to " << transitMax << " times): shorten"
+            << " in a step, up to " << transitMax << " times) and "
+            << fastCells << " cells (more than " << fastShareLimit
+            << " of the kinetic energy in simulators that cross more than"
+            << " the cell in a step, up to " << fastMax << "): shorten"
             << " deltaT in system/controlDict, or refine the mesh only"
             << " where the transit fails" << endl;
     }
