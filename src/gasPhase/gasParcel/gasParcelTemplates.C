@@ -82,6 +82,14 @@ bool Foam::gasParcel::moveAxisymmetric
     // step's inflow)
     enter(cloud, td);
 
+    // Whether the last track ended on a boundary face without moving: a
+    // simulator reflected at a wall and at once back at it.  A diffuse
+    // wall re-emits it, as at a true second hit an instant later; a second
+    // stall in a row (a specular wall grazed, which would reflect it
+    // there for ever) makes it slide along the wall (axisymmetricMode::
+    // offWall)
+    bool stalled = false;
+
     while (td.keepParticle && !td.switchProcessor && this->stepFraction() < 1)
     {
         const scalar f = 1 - this->stepFraction();
@@ -92,9 +100,14 @@ bool Foam::gasParcel::moveAxisymmetric
         const point here = this->position();
         const point start(here.x(), here.y(), 0);
         const vector path = f*trackTime*U_;
-        const vector chord(axisymmetricMode::chord(here, path));
+        vector chord(axisymmetricMode::chord(here, path));
+        if (stalled)
+        {
+            chord = axisymmetricMode::offWall(*this, chord);
+        }
 
         this->trackToFace(chord, f);
+        stalled = this->stepFraction() == 1 - f && this->onBoundaryFace();
 
         const scalar done = (this->stepFraction() - (1 - f))/f;
         axisymmetricMode::turn(U_, start + done*path);

@@ -209,7 +209,10 @@ Foam::scalar Foam::SolidParcel<ParcelType>::trackToFace
     const point here = this->position();
     const scalar left = ParcelType::trackToFace
     (
-        axisymmetricMode::chord(here, displacement),
+        axisymmetricMode::offWall
+        (
+            *this, axisymmetricMode::chord(here, displacement)
+        ),
         fraction
     );
 
