@@ -72,6 +72,7 @@ import os
 import re
 import resource
 import shutil
+import statistics
 import subprocess
 import sys
 import time
@@ -91,6 +92,13 @@ COEFFS = {"Loth": {"gas": "dsmc"}}
 TARGET = 1.0
 TARGETS = {"oneWay": 0.5}
 DORMANT_TARGET = 0.02
+# The phases alone, and each dormant run: (the phase alone it adds to,
+# its options, what it is)
+ALONE = {"gas": dict(grains=False, model=None), "solids": dict(gas=False, model="none")}
+DORMANT = {"dormantGrains": ("gas", dict(model="oneWay", empty="grains"),
+                             "an empty grain cloud on the gas"),
+           "dormantGas": ("solids", dict(model="none", empty="dsmc"),
+                          "an empty gas on the grains")}
 BOX = os.path.join(foam.PROJECT_DIR, "validation", "freeMolecularCoupling", "box")
 BUILD = os.path.join(foam.PROJECT_DIR, "build", "bench", "couplingCost")
 PROPS = "constant/grainsProperties"
@@ -192,13 +200,11 @@ def main():
         models.insert(0, "none")
 
     N = args.steps
-    runs = {"gas0": dict(steps=1, grains=False, model=None),
+    runs = {"gas0": dict(steps=1, **ALONE["gas"]),
             "none0": dict(steps=1, model="none"),
-            "solids0": dict(steps=1, gas=False, model="none"),
-            "gas": dict(steps=N, grains=False, model=None),
-            "solids": dict(steps=N, gas=False, model="none"),
-            "dormantGrains": dict(steps=N, model="oneWay", empty="grains"),
-            "dormantGas": dict(steps=N, model="none", empty="dsmc")}
+            "solids0": dict(steps=1, **ALONE["solids"])}
+    runs.update({name: dict(steps=N, **opts) for name, opts in ALONE.items()})
+    runs.update({name: dict(steps=N, **opts) for name, (_, opts, _) in DORMANT.items()})
     runs.update({m: dict(steps=N, model=m) for m in models})
     print(f"bench couplingCost: {args.cells}^3 cells, {args.simulators} simulators and "
           f"{args.parcels} parcels per cell, {N} steps, {args.repeat} repetitions, "
@@ -237,18 +243,14 @@ def instructions(case):
 def dormant_instructions(init, steps):
     """What an empty phase adds to the other's step, in instructions per
     step, over steps steps (start-up and writing taken out)."""
-    runs = {"gas": dict(grains=False, model=None),
-            "dormantGrains": dict(model="oneWay", empty="grains"),
-            "solids": dict(gas=False, model="none"),
-            "dormantGas": dict(model="none", empty="dsmc")}
+    runs = dict(ALONE, **{name: opts for name, (_, opts, _) in DORMANT.items()})
     per_step = {}
     for name, opts in runs.items():
         long_run = instructions(variant(init, f"{name}_ir", steps + 1, **opts))
         short_run = instructions(variant(init, f"{name}_ir0", 1, **opts))
         per_step[name] = (long_run - short_run)/steps
     parts = []
-    for name, alone, what in (("dormantGrains", "gas", "an empty grain cloud on the gas"),
-                              ("dormantGas", "solids", "an empty gas on the grains")):
+    for name, (alone, _, what) in DORMANT.items():
         extra = per_step[name]/per_step[alone] - 1
         verdict = " MISSES TARGET" if extra > DORMANT_TARGET else ""
         parts.append(f"{what} {100*extra:+.2f} % ({per_step[name]:.4g} against "
@@ -261,10 +263,8 @@ def dormant(cpus):
     """What an empty phase costs the other, from CPU times: the ratio of
     the minima, and the spread of the repetitions' ratios (each
     repetition's runs one after another)."""
-    import statistics
     parts = []
-    for name, alone, what in (("dormantGrains", "gas", "an empty grain cloud on the gas"),
-                              ("dormantGas", "solids", "an empty gas on the grains")):
+    for name, (alone, _, what) in DORMANT.items():
         ratio = min(cpus[name])/min(cpus[alone]) - 1
         each = [a/b - 1 for a, b in zip(cpus[name], cpus[alone])]
         spread = statistics.stdev(each) if len(each) > 1 else float("nan")

@@ -58,14 +58,13 @@ import sys
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
                                 "..", "..", "src", "python"))
 
-from rmf import foam  # noqa: E402
+from rmf import foam, snider  # noqa: E402
 
 BUILD = os.path.join(foam.PROJECT_DIR, "build", "bench", "modelCost")
-SNIDER = os.path.join(foam.PROJECT_DIR, "tutorials", "solids", "sniderSedimentation")
 WEDGE = os.path.join(foam.PROJECT_DIR, "validation", "axisymmetricGas", "wedge")
 PROPS = "constant/grainsProperties"
 GAS = "constant/dsmcProperties"
-CELLS, SIDE = 5, 0.046                  # the column: 5 x 5 of the tutorial's 15 x 15
+CELLS = 5                               # the column: 5 x 5 of the tutorial's 15 x 15
 OFF = {"subModels/packingModel": "none", "subModels/dampingModel": "none",
        "subModels/isotropyModel": "none", "subModels/stochasticCollisionModel": "none"}
 NTC = {"subModels/stochasticCollisionModel": "NTCHardSphere"}
@@ -84,17 +83,7 @@ WEDGE_SETTINGS = {
 
 
 def column_init():
-    case = foam.copy_setup(SNIDER, os.path.join(BUILD, "column_init"))
-    mesh = os.path.join(case, "system", "blockMeshDict")
-    with open(mesh) as f:
-        text = f.read()
-    with open(mesh, "w") as f:
-        f.write(text.replace("0.138", f"{SIDE:g}").replace("(15 15 40)",
-                                                            f"({CELLS} {CELLS} 40)"))
-    init = "system/grainsInitialiseDict"
-    foam.set_entry(case, init, "regions/column/max", f"({SIDE:g} {SIDE:g} 0.3)")
-    full = int(foam.get_entry(SNIDER, init, "regions/column/nParcels"))
-    foam.set_entry(case, init, "regions/column/nParcels", round(full*(CELLS/15)**2))
+    case, _ = snider.narrow_column(os.path.join(BUILD, "column_init"), CELLS)
     foam.run(case, "blockMesh")
     foam.run(case, "rarefiedMultiphaseInitialise")
     return case

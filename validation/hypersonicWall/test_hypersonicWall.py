@@ -118,18 +118,25 @@ def make_case(dt):
     return case
 
 
+def incident_fluxes(s):
+    """Number and translational energy fluxes of a drifting Maxwellian
+    through a plane facing the drift at speed ratio s, in units of n c_m
+    and n m c_m^3 (module docstring)."""
+    e, one_erf = math.exp(-s*s), 1 + math.erf(s)
+    number = (e + math.sqrt(math.pi)*s*one_erf)/(2*math.sqrt(math.pi))
+    energy = ((s*s + 2)*e + math.sqrt(math.pi)*s*(s*s + 2.5)*one_erf)/(4*math.sqrt(math.pi))
+    return number, energy
+
+
 def flat_plate():
     """Pressure and heat flux of the free-molecular flat plate facing the
     stream (module docstring)."""
     cm = math.sqrt(2*K*T/M)
     s = V/cm
-    e, one_erf = math.exp(-s*s), 1 + math.erf(s)
-    rho = N*M
     cp, _ = element_coefficients(s, 1.0, T_WALL/T)
-    pressure = 0.5*rho*V*V*cp
-    n_in = N*cm/(2*math.sqrt(math.pi))*(e + math.sqrt(math.pi)*s*one_erf)
-    e_in = N*M*cm**3/(4*math.sqrt(math.pi))*((s*s + 2)*e
-                                             + math.sqrt(math.pi)*s*(s*s + 2.5)*one_erf)
+    pressure = 0.5*N*M*V*V*cp
+    number, energy = incident_fluxes(s)
+    n_in, e_in = N*cm*number, N*M*cm**3*energy
     heat = e_in + n_in*ZETA/2*K*T - n_in*(2 + ZETA/2)*K*T_WALL
     return pressure, heat
 
@@ -148,9 +155,7 @@ def test_flux_moments():
         n_q = integrate.quad(lambda w: w*f(w), lo, hi, epsabs=0, epsrel=1e-13, limit=200)[0]
         e_q = integrate.quad(lambda w: w*0.5*(w*w + 1)*f(w), lo, hi, epsabs=0,
                              epsrel=1e-13, limit=200)[0]
-        e, one_erf = math.exp(-s*s), 1 + math.erf(s)
-        n_c = (e + math.sqrt(math.pi)*s*one_erf)/(2*math.sqrt(math.pi))
-        e_c = ((s*s + 2)*e + math.sqrt(math.pi)*s*(s*s + 2.5)*one_erf)/(4*math.sqrt(math.pi))
+        n_c, e_c = incident_fluxes(s)
         assert abs(n_c/n_q - 1) < 1e-12 and abs(e_c/e_q - 1) < 1e-12, (s, n_c/n_q, e_c/e_q)
 
 

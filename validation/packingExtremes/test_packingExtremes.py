@@ -39,25 +39,18 @@ import pytest
 from rmf import foam, snider
 from rmf_testing import report
 
-TUTORIAL = os.path.join(foam.PROJECT_DIR, "tutorials", "solids", "sniderSedimentation")
 BUILD = os.path.join(foam.PROJECT_DIR, "build", "validation", "packingExtremes")
 PROPS = "constant/grainsProperties"
 INIT = "system/grainsInitialiseDict"
-SIDE, CELLS, FILL_TOP = 0.046, 5, 0.1
+CELLS, FILL_TOP = 5, 0.1
 ALPHA0, END = 0.59, 0.3
 BED_BELOW, CLEAR_ABOVE = 0.09, 0.12
 
 
 def make_case(name, eps):
-    case = foam.copy_setup(TUTORIAL, os.path.join(BUILD, name))
-    mesh = os.path.join(case, "system", "blockMeshDict")
-    with open(mesh) as f:
-        text = f.read()
-    text = text.replace("0.138", f"{SIDE:g}").replace("(15 15 40)", f"({CELLS} {CELLS} 40)")
-    with open(mesh, "w") as f:
-        f.write(text)
+    case, side = snider.narrow_column(os.path.join(BUILD, name), CELLS)
     region = "regions/column/"
-    foam.set_entry(case, INIT, region + "max", f"({SIDE:g} {SIDE:g} {FILL_TOP:g})")
+    foam.set_entry(case, INIT, region + "max", f"({side:.6g} {side:.6g} {FILL_TOP:g})")
     foam.remove_entry(case, INIT, region + "nParcels")
     foam.set_entry(case, INIT, region + "alpha0", ALPHA0)
     foam.set_entry(case, PROPS, "subModels/twoSidedCoeffs/particleStressModel/eps", eps)

@@ -114,18 +114,7 @@ def narrow(build=BUILD):
     docstring); returns (all passed, summary) of rmf.snider.check with
     the averaged cell bound (a layer holds too few parcels for the layer
     bound: rmf.snider)."""
-    side = 0.138*NARROW_CELLS/15
-    case = foam.copy_setup(TUTORIAL, os.path.join(build, "narrow"))
-    mesh = os.path.join(case, "system", "blockMeshDict")
-    with open(mesh) as f:
-        text = f.read()
-    text = text.replace("0.138", f"{side:.6g}").replace(
-        "(15 15 40)", f"({NARROW_CELLS} {NARROW_CELLS} 40)")
-    with open(mesh, "w") as f:
-        f.write(text)
-    foam.set_entry(case, INIT, "regions/column/max", f"({side:.6g} {side:.6g} 0.3)")
-    foam.set_entry(case, INIT, "regions/column/nParcels",
-                   round(FULL_PARCELS*(NARROW_CELLS/15)**2))
+    case, _ = snider.narrow_column(os.path.join(build, "narrow"), NARROW_CELLS)
     foam.run(case, "blockMesh")
     foam.run(case, "rarefiedMultiphaseInitialise")
     seconds = solve(case)

@@ -73,6 +73,32 @@ BED_AGREE = 0.01
 CLEAR_ALPHA = 0.05
 
 
+TUTORIAL = os.path.join(foam.PROJECT_DIR, "tutorials", "solids", "sniderSedimentation")
+TUTORIAL_SIDE, TUTORIAL_CELLS = 0.138, 15
+
+
+def narrow_column(dst, cells):
+    """Fresh set-up (not meshed) of the tutorial in a column of cells x
+    cells of its 15 x 15 cells (the same cells, 40 layers, side
+    0.138 cells/15 m), its fill cut to the column and its parcel count
+    scaled with the area, so that alpha_0 and the parcel weight stay the
+    tutorial's; returns (case, side)."""
+    side = TUTORIAL_SIDE*cells/TUTORIAL_CELLS
+    case = foam.copy_setup(TUTORIAL, dst)
+    mesh = os.path.join(case, "system", "blockMeshDict")
+    with open(mesh) as f:
+        text = f.read()
+    with open(mesh, "w") as f:
+        f.write(text.replace(f"{TUTORIAL_SIDE:g}", f"{side:.6g}").replace(
+            f"({TUTORIAL_CELLS} {TUTORIAL_CELLS} 40)", f"({cells} {cells} 40)"))
+    init = "system/grainsInitialiseDict"
+    full = int(foam.get_entry(TUTORIAL, init, "regions/column/nParcels"))
+    foam.set_entry(case, init, "regions/column/max", f"({side:.6g} {side:.6g} 0.3)")
+    foam.set_entry(case, init, "regions/column/nParcels",
+                   round(full*(cells/TUTORIAL_CELLS)**2))
+    return case, side
+
+
 def layers(case):
     """Heights of the cell layers and, per cell, its layer index."""
     z = foam.cell_centres(case)[:, 2]
