@@ -71,7 +71,7 @@ sys.path.insert(0, os.path.join(PROJECT, "src", "python"))
 from rmf import erosion, foam, grainseries  # noqa: E402
 
 sys.path.insert(0, os.path.join(PROJECT, "validation", "dragLaws"))
-from reference import cd_fm_closed  # noqa: E402
+from reference import cd_fm_closed, speed_moments  # noqa: E402
 
 OUT = os.path.join(PROJECT, "build", "bench", "tradeoff")
 TARGET = 0.10               # the error target of the recommendation
@@ -303,19 +303,6 @@ STREAM_SETTINGS = [
     ("dt2", "one-way, deltaT x 2", "oneWay", 1, 2),
     ("dt5", "one-way, deltaT x 5 (about 2 mean collision times)", "oneWay", 1, 5),
 ]
-
-
-def speed_moments(s):
-    """E|w| and E|w|^3 of the molecular speed relative to a body at drift
-    speed ratio s of a Maxwellian, in units of c_m = sqrt(2kT/m) and c_m^3
-    (closed forms; checked against quadrature in test_tradeoff.py)."""
-    e = math.exp(-s*s)/math.sqrt(math.pi)
-    if s < 1e-6:
-        return 2/math.sqrt(math.pi), 4/math.sqrt(math.pi)
-    erf = math.erf(s)
-    m1 = (s + 1/(2*s))*erf + e
-    m3 = (s**3 + 3*s + 3/(4*s))*erf + (s*s + 2.5)*e
-    return m1, m3
 
 
 def free_molecular_grain(gas, grain, t_end, n=2000):

@@ -71,6 +71,7 @@ oscillation, solved in closed form:
 import filecmp
 import math
 import os
+import re
 import shutil
 import subprocess
 import time
@@ -276,6 +277,113 @@ def test_binary_normal_impact(e, contacts):
                   f"{tc_meas:.6e} s vs {tc:.6e} s ({100*(tc_meas/tc - 1):+.3f} %,"
                   " tol 1 %)")
     assert ok_e and ok_t
+
+
+def binary_impact(name, e, dt, contacts, v0=0.1, k=KN, entries=()):
+    """The binary normal impact of test_binary_normal_impact at step dt:
+    (e measured, t_c measured, t_c, log text)."""
+    tc = contact_time(e, MASS/2, k)
+    g0, c = 2e-5, 0.005
+    groups = {
+        "a": (np.array([[c - (D + g0)/2, c, c]]), (v0, 0, 0), 0),
+        "b": (np.array([[c + (D + g0)/2, c, c]]), (-v0, 0, 0), 0),
+    }
+    t_start = g0/(2*v0)
+    per_step = PER_STEP[contacts]
+    steps = per_step*int(math.ceil((t_start + 2*tc)/(per_step*dt)))
+    entries = [(PAIR + "e", e), (WALL + "e", e), (PAIR + "kn", k), (PAIR + "kt", k),
+               *entries]
+    case, _ = run_case(name, groups, dt, steps, entries, contacts=contacts,
+                       per_step=per_step)
+    tf = float(final_time(case))
+    x, U, _ = state(case, final_time(case))
+    w_f = U[1, 0] - U[0, 0]
+    g_f = x[1, 0] - x[0, 0] - D
+    with open(os.path.join(case, "log.rarefiedMultiphaseFoam")) as f:
+        text = f.read()
+    return w_f/(2*v0), (tf - g_f/w_f) - t_start, tc, text
+
+
+@pytest.mark.parametrize("contacts", CONTACTS)
+@pytest.mark.parametrize("factor", [2, 10])
+def test_binary_impact_long_step(factor, contacts):
+    """Stability at the extremes (issue 17's matrix): the step at 2x and
+    10x the DEM's limit t_c/50 (pairCollision: deltaT = t_c/25 and t_c/5,
+    the largest it accepts; cartesianContacts: stepsPerContact 25 and 5,
+    its smallest).  Expected: at 2x no warning, e and t_c within the 1 %
+    bar of t_c/50; at 10x the run goes on with the warning (pair: deltaT
+    more than t_c/20; cartesian: fewer than 20 sub-steps), the grains
+    part with a finite rebound whose error is printed (the leapfrog is
+    stable to dt = 2/omega = t_c/1.6 here, so nothing blows up; the
+    contact is sampled at five points and e is no longer the
+    input's).  At 2x the error depends on where the steps fall in the
+    contact: measured -0.02 % at t_c/25, but -0.73 % at t_c/27.5 and
+    +0.74 % at t_c/26.4 (the same in both models), against 0.003 % at
+    t_c/50."""
+    e = 0.8
+    tc = contact_time(e, MASS/2)
+    per_contact = 50//factor
+    # (foamDictionary writes deltaT to 6 digits: 1e-5 below keeps the
+    # step under t_c/5 and cartesianContacts at per_contact sub-steps)
+    dt = tc/per_contact*(1 - 1e-5)
+    entries = [(CARTESIAN + "stepsPerContact", per_contact)]
+    e_meas, tc_meas, tc, text = binary_impact(
+        f"longStep{factor}_{contacts}", e, dt, contacts, entries=entries)
+    warned = ("more than t_c/20" in text if contacts == "pair"
+              else "fewer than 20 sub-steps" in text)
+    finite = math.isfinite(e_meas) and math.isfinite(tc_meas) and e_meas > 0
+    err_e, err_t = e_meas/e - 1, tc_meas/tc - 1
+    ok = report(f"t_c/{per_contact}: warning ({contacts})", warned == (factor == 10),
+                f"warned {warned} (expected {factor == 10})")
+    ok &= report(f"t_c/{per_contact}: rebound ({contacts})",
+                 finite and (factor == 10 or (abs(err_e) < 0.01 and abs(err_t) < 0.01)),
+                 f"e {e_meas:.5f} vs {e} ({100*err_e:+.3f} %), t_c {100*err_t:+.3f} %"
+                 + (" (printed: beyond the limit)" if factor == 10 else " (tol 1 %)"))
+    assert ok
+
+
+def peak_overlap(e, w0, m_eff, k):
+    """Largest overlap of a normal contact entered at closing speed w0:
+    the damped oscillator x'' + 2 zeta omega x' + omega^2 x = 0, x(0) = 0,
+    x'(0) = w0, peaks where tan(omega_d t) = omega_d/(zeta omega)."""
+    z = zeta(e)
+    w = math.sqrt(k/m_eff)
+    wd = w*math.sqrt(1 - z*z)
+    t = math.atan2(math.sqrt(1 - z*z), z)/wd
+    return w0/wd*math.exp(-z*w*t)*math.sin(wd*t)
+
+
+@pytest.mark.parametrize("contacts", CONTACTS)
+@pytest.mark.parametrize("springs,k,v0", [("Berger", KN, 0.1), ("soft", KN/100, 0.5)])
+def test_overlap_guard(springs, k, v0, contacts):
+    """Stability at the extremes (issue 17's matrix): the overlap guard.
+    The binary impact at t_c/50 with Berger's springs at 0.1 m/s and with
+    springs 100 times softer (the usual shortcut) at 0.5 m/s.  Expected:
+    the logged largest overlap over the radius equals the damped
+    oscillator's peak within 1 % (the peak is sampled at steps of t_c/50:
+    a sine sampled at steps of pi/50 misses its top by at most
+    (pi/100)^2/2 = 0.05 %); the warning exactly when the peak is above
+    linearContact's limit, 0.05 R: Berger's 0.0033 R no, the soft
+    springs' 0.17 R yes; the grain-wall contacts, never touched, at 0."""
+    e = 0.8
+    dt = contact_time(e, MASS/2, k)/50
+    _, _, _, text = binary_impact(f"overlap_{springs}_{contacts}", e, dt, contacts,
+                                  v0=v0, k=k)
+    names = (("pairLinearSpringDashpot", "wallLinearSpringDashpot") if contacts == "pair"
+             else ("cartesianContacts grainGrain", "cartesianContacts grainWall"))
+    found = [re.findall(re.escape(n) + r": largest overlap since the last write (\S+) of"
+                        r" the radius", text) for n in names]
+    expected = peak_overlap(e, 2*v0, MASS/2, k)/R
+    warned = "the springs are too soft" in text
+    ok = report(f"overlap logged ({springs}, {contacts})",
+                all(len(f) == 1 for f in found), f"reports {[len(f) for f in found]}")
+    pair, wall = (float(f[-1]) if f else math.nan for f in found)
+    ok &= report(f"overlap ({springs}, {contacts})", abs(pair/expected - 1) < 0.01 and wall == 0,
+                 f"largest {pair:.5g} R vs the oscillator's {expected:.5g} R "
+                 f"({100*(pair/expected - 1):+.3f} %, tol 1 %); wall {wall:g}")
+    ok &= report(f"overlap warning ({springs}, {contacts})", warned == (expected > 0.05),
+                 f"warned {warned} (expected {expected > 0.05}: limit 0.05 R)")
+    assert ok
 
 
 @pytest.mark.parametrize("where,contacts", [

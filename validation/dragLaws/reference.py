@@ -69,6 +69,29 @@ def cd_fm_closed(s, tp_by_tg):
             + 2*SQRT_PI/(3*s)*math.sqrt(tp_by_tg))
 
 
+def speed_moments(s):
+    """E|w| and E|w|^3 of the molecular speed relative to a body at drift
+    speed ratio s of a Maxwellian, in units of c_m = sqrt(2kT/m) and c_m^3
+    (closed forms; checked against quadrature in bench/tradeoff's
+    test_tradeoff.py)."""
+    e = math.exp(-s*s)/SQRT_PI
+    if s < 1e-6:
+        return 2/SQRT_PI, 4/SQRT_PI
+    erf = math.erf(s)
+    m1 = (s + 1/(2*s))*erf + e
+    m3 = (s**3 + 3*s + 3/(4*s))*erf + (s*s + 2.5)*e
+    return m1, m3
+
+
+def heat_fm(s, tp_by_tg):
+    """Free-molecular heat of a fully accommodating sphere (doc/physics.md
+    4.2) over pi R^2 n k T_g c_m: the molecules that strike it bring their
+    kinetic energy in its frame, E|w|^3 m/2 = k T_g c_m E|w/c_m|^3, and
+    leave with 2 k T_p each."""
+    m1, m3 = speed_moments(s)
+    return m3 - 2*tp_by_tg*m1
+
+
 # ---------------------------------------------------------------------------
 # Loth (2008), doc/physics.md 4.5
 
@@ -127,6 +150,15 @@ LOTH_CD_POINTS = [
 ]
 
 # (Re, omega*)
+def nusselt(re, kn, gamma, pr):
+    """Loth's heat (doc/physics.md 4.5): Ranz-Marshall's continuum Nu_c,
+    the free-molecular Nu_fm of a sphere at rest (alpha_T = 1), and
+    Sherman's interpolation between them."""
+    nu_c = 2 + 0.6*math.sqrt(re)*pr**(1/3)
+    nu_fm = (gamma + 1)*pr/(4*gamma*kn)
+    return nu_c/(1 + nu_c/nu_fm)
+
+
 LOTH_CL_POINTS = [(0.1, 0.01), (1.0, 0.1), (10.0, 0.5), (40.0, 0.2),
                   (100.0, 1.0), (500.0, 4.0)]
 

@@ -533,3 +533,88 @@ def test_hybrid_and_monitor():
                  f"read back: {'read sigmaCrMax.grains' in restart}, "
                  f"never lowered: {bool(np.all(s2 >= s1))}")
     assert ok
+
+
+# ---------------------------------------------------------------------------
+# The step guard at 0.5, 2 and 10 times the grains' mean collision time
+
+GUARD = re.compile(r"NTCHardSphere: collisions per parcel per step since the last write"
+                   r" largest (\S+) \((\d+) cells above 1\); candidates with acceptance"
+                   r" probability above 1 (\S+) \(largest (\S+)\)")
+
+
+@pytest.mark.parametrize("factor", [0.5, 2, 10])
+def test_step_guard(factor):
+    """Stability at the extremes (issue 17's matrix: deltaT at 1x, 2x and
+    10x the model's limit).  The limit of NTC grains is their mean time
+    between collisions, 1/nu with nu = n sigma <c_r> (7.05 ms here);
+    deltaT = factor/nu.  The guard logs at every write the largest
+    collisions per parcel per step of a cell, 2 N_coll/(parcels x steps):
+    nominal nu deltaT = factor.  It is the largest of 64 cells'
+    estimates, each with the noise of its collision count (1/sqrt(C_cell):
+    2.5 % at 0.5x, 1560 collisions) and of its occupancy (the rate of a
+    parcel goes as the cell's N - 1: 1/sqrt(312 parcels x the independent
+    occupancies of 20 steps, about 4.5 at 0.5x, where a parcel moves 5.6 mm
+    of a 25 mm cell per step): 3.7 % at 0.5x, less at 2x and 10x.  The
+    largest of 64 lies about 2.4 sd above the nominal, at most about 4 sd
+    (15 %): band [1, 1.2) of the nominal.
+    Expected: no warning at 0.5x, the warning at 2x and 10x (every cell
+    above 1); no candidate above the majorant at 0.5x and 2x (it is never
+    below the bound of the step's pairs at the step's start); at 10x a few
+    (each parcel collides about 10 times in the step, and a collision can
+    send a parcel beyond that bound: v_p* - <v> = (v_m - <v>) +
+    |v_p - v_m| n), fewer than 1e-5 of the candidates, with probabilities
+    below 2; and the collision rate per second and the
+    conservation of momentum and energy as at the tutorial's step: in a
+    homogeneous elastic gas NTC's rate does not depend on deltaT (each
+    step draws nu deltaT collisions per parcel from the state it starts
+    with, and collisions do not change the state's distribution), so a
+    long step loses nothing this case can see: what it loses is the
+    motion between a parcel's collisions in a gradient."""
+    nu = NREAL*SIGMA*4*np.sqrt(1/np.pi)     # theta_0 = 1 m^2/s^2
+    dt = factor/nu
+    steps = 20
+    case = foam.copy_setup(CASE, os.path.join(BUILD, f"stepGuard{factor:g}"))
+    foam.set_entry(case, "system/controlDict", "deltaT", f"{dt:.6g}")
+    foam.set_entry(case, "system/controlDict", "endTime", f"{steps*dt:.6g}")
+    foam.set_entry(case, "system/controlDict", "writeInterval", steps)
+    foam.run(case, "blockMesh")
+    foam.run(case, "rarefiedMultiphaseInitialise")
+    log = foam.run(case, "rarefiedMultiphaseFoam")
+    with open(log) as f:
+        text = f.read()
+    rows = GUARD.findall(text)
+    collisions = foam.log_values(log, "NTC collisions")[:, 0]
+    C = collisions.sum()
+    t_end = foam.latest_time(case)
+    U0, U1 = parcels(case, "0", "U"), parcels(case, t_end, "U")
+    rate = 2*C/(N*steps*dt)
+    theory = NREAL*SIGMA*4*np.sqrt(theta_of(U0)/np.pi)
+    err, tol = rate/theory - 1, 4/np.sqrt(C)
+    dp = np.abs(U1.sum(axis=0) - U0.sum(axis=0)).max()/np.abs(U0).sum()
+    dke = abs((U1**2).sum()/(U0**2).sum() - 1)
+    warned = "too long for the grain collisions" in text
+
+    ok = report(f"guard logged ({factor}x)", len(rows) == 1, f"{len(rows)} report(s)")
+    largest, above, n_over, p_over = rows[0] if rows else (0, 0, -1, 0)
+    largest, above, n_over = float(largest), int(above), float(n_over)
+    ok &= report(f"collisions per parcel per step ({factor}x)",
+                 1 <= largest/factor < 1.2,
+                 f"largest {largest:.4g} against nominal {factor} (band [1, 1.2)),"
+                 f" {above} of 64 cells above 1")
+    ok &= report(f"warning ({factor}x)",
+                 warned == (factor > 1) and above == (64 if factor > 1 else 0),
+                 f"warned {warned}, {above} cells above 1 (expected {factor > 1})")
+    candidates = foam.log_values(log, "NTC candidate pairs")[:, 0].sum()
+    ok &= report(f"acceptance above 1 ({factor}x)",
+                 n_over == 0 if factor < 10 else
+                 n_over < 1e-5*candidates and float(p_over) < 2,
+                 f"{n_over:g} of {candidates:.0f} candidates (largest probability {p_over};"
+                 f" expected {'none' if factor < 10 else 'below 1e-5 of them, below 2'})")
+    ok &= report(f"collision rate ({factor}x)", abs(err) < tol,
+                 f"{rate:.2f}/s per parcel vs {theory:.2f}/s ({100*err:+.2f} %,"
+                 f" tolerance {100*tol:.2f} %: 4/sqrt(C), C = {C:.0f})")
+    ok &= report(f"conservation ({factor}x)",
+                 dp < 1e-12 and dke < 1e-12 and bool(np.all(np.isfinite(U1))),
+                 f"|dP|/sum(m|U|) {dp:.1e}, |dKE|/KE {dke:.1e} (round-off: 1e-12)")
+    assert ok

@@ -55,7 +55,7 @@ from rmf_testing import run_failing
 
 import sys
 sys.path.insert(0, os.path.join(foam.PROJECT_DIR, "validation", "dragLaws"))
-from reference import loth_cd, loth_cl  # noqa: E402
+from reference import loth_cd, loth_cl, nusselt  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 BOX = os.path.join(foam.PROJECT_DIR, "validation", "freeMolecularCoupling", "box")
@@ -123,14 +123,6 @@ def trajectory(case):
     return np.array(rows)
 
 
-def nusselt(re, kn):
-    """dragLaws.H: Nu_c (Ranz-Marshall), Nu_fm (alpha_T = 1), Sherman's
-    interpolation."""
-    nu_c = 2 + 0.6*math.sqrt(re)*PR**(1/3)
-    nu_fm = (GAMMA + 1)*PR/(4*GAMMA*kn)
-    return nu_c/(1 + nu_c/nu_fm)
-
-
 def integrate(rho_g, U, d, t_end, n, T_g=T_G, mu=MU):
     """RK4 of (v, T_p) from (0, T_P0) to t_end in n steps, gas (rho_g, U
     along x, T_g, mu); returns a function of t by linear interpolation on
@@ -145,7 +137,7 @@ def integrate(rho_g, U, d, t_end, n, T_g=T_G, mu=MU):
         re = rho_g*abs(v0)*d/mu
         ma = abs(v0)/math.sqrt(GAMMA*R_AR*T_g)
         dv = 0.75*loth_cd(re, ma, GAMMA, T/T_g)*rho_g*abs(v0)*v0/(RHO_P*d) if re > 0 else 0
-        dT = nusselt(re, kn)*math.pi*d*kappa*(T_g - T)/(mp*CP_P)
+        dT = nusselt(re, kn, GAMMA, PR)*math.pi*d*kappa*(T_g - T)/(mp*CP_P)
         return np.array([dv, dT])
 
     h = t_end/n

@@ -112,3 +112,83 @@ def test_step_criteria():
     ok = check("deltaT 1e-6 s", run("short", 1e-6), warned=False, above=False)
     ok &= check("deltaT 5e-5 s", run("long", 5e-5), warned=True, above=True)
     assert ok
+
+
+EXCESS = re.compile(r"Gas NTC since the last write: cell-steps whose \(sigma c_r\)_max was"
+                    r" exceeded (\S+), largest acceptance probability (\S+)")
+def scale_majorant(path, scale):
+    """Multiply every cell value of the volScalarField at path by scale."""
+    with open(path) as f:
+        text = f.read()
+    m = re.search(r"internalField\s+nonuniform\s+List<scalar>\s*(\d+)\s*\((.*?)\)\s*;",
+                  text, re.S)
+    assert m, "dsmcSigmaTcRMax is not a nonuniform list"
+    values = [float(v)*scale for v in m.group(2).split()]
+    assert len(values) == int(m.group(1))
+    body = "\n".join(f"{v:.17g}" for v in values)
+    with open(path, "w") as f:
+        f.write(text[:m.start()] + f"internalField nonuniform List<scalar> {len(values)}\n(\n"
+                + body + "\n);" + text[m.end():])
+
+
+def majorant_excess(name, scale):
+    """FreeSpacePeriodic, 1 step from the fill, then its majorant times
+    scale and 4 more steps from that restart, written at the end: (the
+    cell-steps with a probability above 1 and the largest of the first
+    step, of the restart, and whether each warned)."""
+    case = foam.copy_case(foam.dsmc_tutorial("freeSpacePeriodic"), os.path.join(BUILD, name))
+    foam.set_steps(case, 1)
+    foam.run(case, "blockMesh")
+    foam.run(case, "dsmcInitialise")
+    found = []
+    for log in ("log.rarefiedMultiphaseFoam", "log.restart"):
+        if found:
+            t1 = foam.latest_time(case)
+            scale_majorant(os.path.join(case, t1, "dsmcSigmaTcRMax"), scale)
+            control = "system/controlDict"
+            foam.set_entry(case, control, "startFrom", "latestTime")
+            foam.set_entry(case, control, "endTime", f"{5*float(t1):.6g}")
+            foam.set_entry(case, control, "writeInterval", f"{4*float(t1):.6g}")
+        with open(foam.run(case, "rarefiedMultiphaseFoam", log=log)) as f:
+            text = f.read()
+        rows = EXCESS.findall(text)
+        assert len(rows) == 1, rows
+        found.append((float(rows[0][0]), float(rows[0][1]),
+                      "acceptance probability of" in text))
+    return found
+
+
+def test_majorant_excess():
+    """The gas's NTC guard (issue 17's "NTC acceptance probability above
+    1"): upstream's collisions draw a cell's candidates from its majorant
+    (sigma c_r)_max and accept sigma c_r/(sigma c_r)_max; a candidate
+    above it is accepted once though it stood for more collisions, and
+    raises the majorant for the next step.  The gas logs, at every write,
+    the cell-steps whose majorant was raised and the largest such
+    probability (the raised over the drawn-from majorant), with a warning
+    above 8: any majorant is at least Bird's starting sigma_T c_mp, which
+    VHS pairs of an equilibrium gas exceed by (c_r/c_mp)^(2 - 2 omega)
+    2^(omega - 1/2)/Gamma(5/2 - omega) (at the reference temperature);
+    hard spheres are the most sensitive, at c_r/c_mp, and the largest c_r
+    of a million pairs of a gas at rest is 5.4 to 5.9 c_mp (five draws),
+    of 1e8 pairs 6.2 c_mp.  Case: freeSpacePeriodic (N2 + O2, about 12
+    simulators per cell: most cells draw a candidate only every few
+    steps, so the fill's majorant lasts), one step from the fill, then
+    four from its restart.
+    Expected:
+    - the step from the fill and the restart as written: no warning, a
+      largest probability in (1, 3.2]: N2 pairs (omega 0.74, T/T_ref =
+      300/273) at 5.9 c_mp give 1.254 x 5.9^0.52 = 3.2 (O2, the other
+      species, is smaller);
+    - the restart with its majorant divided by 10 (a stale majorant, as
+      where a fast stream enters a slower gas): the warning, a largest
+      probability above 8."""
+    (nf, pf, wf), (n1, p1, w1) = majorant_excess("majorant", 1)
+    _, (n10, p10, w10) = majorant_excess("majorantStale", 0.1)
+    ok = (not wf and not w1 and 1 < pf <= 3.2 and 1 < p1 <= 3.2 and w10 and p10 > 8)
+    print(f"\n{'PASS' if ok else 'FAIL'} gas NTC guard: step from the fill: {nf:g} cells "
+          f"raised, largest {pf:.4g}, warned {wf}; restart as written: {n1:g} cell-steps, "
+          f"largest {p1:.4g}, warned {w1} (expected no warning, largest in (1, 3.2]); "
+          f"majorant / 10: {n10:g} cell-steps, largest {p10:.4g}, warned {w10} (expected "
+          f"the warning, largest above 8)")
+    assert ok

@@ -5,9 +5,9 @@
 \*---------------------------------------------------------------------------*/
 
 #include "gasCloud.H"
+#include "cellExtent.H"
 #include "gasCellAverage.H"
 #include "cellFields.H"
-#include "boundBox.H"
 #include "inputChecks.H"
 #include "keywordChecks.H"
 #include "randomStreams.H"
@@ -831,7 +831,22 @@ void Foam::gasCloud::evolve()
         nArrived_ = 0;
     }
 
+    // Upstream's collisions draw each cell's candidates from its
+    // majorant and raise it for the next step when a candidate exceeds it
+    const scalarField drawnMax(sigmaTcRMax().primitiveField());
+
     DSMCCloud<gasParcel>::evolve();
+
+    forAll(drawnMax, celli)
+    {
+        const scalar raised = sigmaTcRMax()[celli];
+        if (raised > drawnMax[celli])
+        {
+            majorantExcess_.n += 1;
+            majorantExcess_.largest =
+                max(majorantExcess_.largest, raised/drawnMax[celli]);
+        }
+    }
 
     if (axisymmetric_.weighted())
     {
@@ -876,6 +891,7 @@ void Foam::gasCloud::sampleCells()
             writeVibrationalT(sinceWrite_());
         }
         reportStepCriteria(sinceWrite_());
+        reportMajorantExcess();
         sinceWrite_->reset();
     }
 }
@@ -907,8 +923,7 @@ void Foam::gasCloud::reportStepCriteria(const gasCellAverage& average) const
     using constant::mathematical::pi;
 
     const scalar dt = mesh().time().deltaTValue();
-    const pointField& points = mesh().points();
-    const Vector<label>& geometric = mesh().geometricD();
+    const scalarField extents(smallestCellExtents(mesh()));
     const bool weighted = axisymmetric_.weighted();
 
     scalar collisionMax = 0;
@@ -919,16 +934,7 @@ void Foam::gasCloud::reportStepCriteria(const gasCellAverage& average) const
     label fastCells = 0;
     forAll(mesh().cells(), celli)
     {
-        // Smallest extent of the cell in the directions the gas moves in
-        const boundBox box(points, mesh().cellPoints()[celli], false);
-        scalar h = GREAT;
-        for (direction d = 0; d < vector::nComponents; ++d)
-        {
-            if (geometric[d] == 1)
-            {
-                h = min(h, box.span()[d]);
-            }
-        }
+        const scalar h = extents[celli];
 
         // Share of the cell's kinetic energy carried by the simulators now
         // in it that cross more than the cell in a step: a fast beam
@@ -997,6 +1003,29 @@ void Foam::gasCloud::reportStepCriteria(const gasCellAverage& average) const
             << " deltaT in system/controlDict, or refine the mesh only"
             << " where the transit fails" << endl;
     }
+}
+
+
+void Foam::gasCloud::reportMajorantExcess()
+{
+    majorantExcess_.reduce();
+
+    Info<< "Gas NTC since the last write: cell-steps whose (sigma c_r)_max"
+        << " was exceeded " << majorantExcess_.n << ", largest acceptance"
+        << " probability " << majorantExcess_.largest << endl;
+
+    if (majorantExcess_.largest > ntcExcessLimit)
+    {
+        WarningInFunction
+            << "a collision candidate had an acceptance probability of "
+            << majorantExcess_.largest << " (above " << ntcExcessLimit
+            << "): its cell's (sigma c_r)_max was far below the pairs now"
+            << " in it (a fast stream entering a slower gas), and the"
+            << " collisions beyond one that such a candidate stood for were"
+            << " lost in that step" << endl;
+    }
+
+    majorantExcess_ = ntcSelection::excess();
 }
 
 

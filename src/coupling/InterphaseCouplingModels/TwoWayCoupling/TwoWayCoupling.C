@@ -229,9 +229,10 @@ Foam::label Foam::TwoWayCoupling<CloudType>::collideCell
         sigmaCrMax = sigmaCrBound(inCell, partners);
     }
 
+    const scalar drawnMax = sigmaCrMax;
     const label nCandidates = ntcSelection::candidates
     (
-        scalar(Ng)*Ns*sigmaCrMax*dt/this->owner().mesh().V()[celli],
+        scalar(Ng)*Ns*drawnMax*dt/this->owner().mesh().V()[celli],
         remainder_[celli]
     );
     counts_.candidates += nCandidates;
@@ -243,7 +244,13 @@ Foam::label Foam::TwoWayCoupling<CloudType>::collideCell
         const partner& s = partners[rnd_.position<label>(0, Ns - 1)];
 
         const scalar WSigmaCr = s.W*s.sigma*mag(g.U() - s.U);
-        if (ntcSelection::accept(WSigmaCr, sigmaCrMax, rnd_))
+        if
+        (
+            ntcSelection::accept
+            (
+                WSigmaCr, drawnMax, sigmaCrMax, rnd_, counts_.over
+            )
+        )
         {
             const vector c0(g.U());
             const scalar Ei0 = g.Ei() + vibrationalEnergy(g);
@@ -485,6 +492,7 @@ void Foam::TwoWayCoupling<CloudType>::coupleGas(gasCloud& gas)
     reduce(all.probabilityMax, maxOp<scalar>());
     reduce(all.subCycledCells, sumOp<label>());
     reduce(all.subStepsMax, maxOp<label>());
+    all.over.reduce();
 
     reduce(gained_.momentum, sumOp<vector>());
     reduce(gained_.energy, sumOp<scalar>());
@@ -496,6 +504,8 @@ void Foam::TwoWayCoupling<CloudType>::coupleGas(gasCloud& gas)
         << all.collisions << ' ' << total << ' ' << all.probabilityMax << nl
         << "    Gas-grain sub-cycled cells, largest sub-steps = "
         << all.subCycledCells << ' ' << all.subStepsMax << nl
+        << "    Gas-grain candidates with acceptance probability above 1,"
+        << " largest = " << all.over.n << ' ' << all.over.largest << nl
         << "    Gas gain from grains: momentum, energy, sums of squares = "
         << gained_.momentum << ' ' << gained_.energy << ' '
         << gained_.momentumSqr << ' ' << gained_.energySqr << nl;

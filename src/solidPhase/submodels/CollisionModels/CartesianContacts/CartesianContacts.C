@@ -374,7 +374,8 @@ void Foam::CartesianContacts<CloudType>::contactForces(const scalar dt)
 
         const linearContact::forces fc = grainGrain_.contact
         (
-            Rsum - rMag, n, v, m_[i]*m_[j]/(m_[i] + m_[j]), dt, e.spring
+            Rsum - rMag, min(R_[i], R_[j]), n, v,
+            m_[i]*m_[j]/(m_[i] + m_[j]), dt, e.spring
         );
 
         const vector F(fc.normal + fc.tangential);
@@ -404,7 +405,7 @@ void Foam::CartesianContacts<CloudType>::contactForces(const scalar dt)
 
             const linearContact::forces fc = grainWall_.contact
             (
-                R_[i] - dist, n, v, m_[i], dt, spring
+                R_[i] - dist, R_[i], n, v, m_[i], dt, spring
             );
 
             f_[i] += fc.normal + fc.tangential;
@@ -618,6 +619,9 @@ void Foam::CartesianContacts<CloudType>::advance
     }
 
     scatterSprings();
+    const Time& time = cloud.db().time();
+    grainGrain_.reportOverlap(time, "cartesianContacts grainGrain");
+    grainWall_.reportOverlap(time, "cartesianContacts grainWall");
 
     // Track every grain along its displacement; the velocity field
     // carries the displacement for the move

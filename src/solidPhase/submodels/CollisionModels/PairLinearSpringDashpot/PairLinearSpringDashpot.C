@@ -53,6 +53,7 @@ Foam::label Foam::PairLinearSpringDashpot<CloudType>::nSubCycles() const
 {
     // The lightest contact: two of the lightest grains
     contact_.checkTimeStep(this->owner(), 0.5);
+    contact_.reportOverlap(this->owner().db().time(), this->type());
 
     return 1;
 }
@@ -95,7 +96,7 @@ void Foam::PairLinearSpringDashpot<CloudType>::evaluatePair
 
     const linearContact::forces f = contact_.contact
     (
-        overlap, n, v, mA*mB/(mA + mB),
+        overlap, min(RA, RB), n, v, mA*mB/(mA + mB),
         this->owner().db().time().deltaTValue(), springA
     );
     springB = -springA;

@@ -49,7 +49,7 @@ void Foam::WallLinearSpringDashpot<CloudType>::evaluateSite
 
     const linearContact::forces f = contact_.contact
     (
-        overlap, n, v, p.mass(),
+        overlap, R, n, v, p.mass(),
         this->owner().db().time().deltaTValue(), spring
     );
 
@@ -64,6 +64,7 @@ template<class CloudType>
 Foam::label Foam::WallLinearSpringDashpot<CloudType>::nSubCycles() const
 {
     contact_.checkTimeStep(this->owner(), 1);
+    contact_.reportOverlap(this->owner().db().time(), this->type());
 
     return 1;
 }

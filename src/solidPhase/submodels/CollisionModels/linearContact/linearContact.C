@@ -86,9 +86,39 @@ void Foam::linearContact::checkTimeStep
 }
 
 
+void Foam::linearContact::reportOverlap
+(
+    const Time& time,
+    const word& who
+) const
+{
+    if (!time.writeTime())
+    {
+        return;
+    }
+
+    reduce(overlapMax_, maxOp<scalar>());
+
+    Info<< "    " << who << ": largest overlap since the last write "
+        << overlapMax_ << " of the radius" << endl;
+
+    if (overlapMax_ > overlapLimit)
+    {
+        WarningInFunction
+            << who << ": a contact of " << dict_.name() << " overlapped by "
+            << overlapMax_ << " of the radius (above " << overlapLimit
+            << "): the springs are too soft for the impacts (kn = " << kn_
+            << " N/m; the overlap falls as 1/sqrt(kn))" << endl;
+    }
+
+    overlapMax_ = 0;
+}
+
+
 Foam::linearContact::forces Foam::linearContact::contact
 (
     const scalar overlap,
+    const scalar radius,
     const vector& n,
     const vector& v,
     const scalar mEff,
@@ -96,6 +126,8 @@ Foam::linearContact::forces Foam::linearContact::contact
     vector& spring
 ) const
 {
+    overlapMax_ = max(overlapMax_, overlap/radius);
+
     const scalar eta = etaN(mEff);
     const scalar vn = v & n;
     const vector vt = v - vn*n;

@@ -116,6 +116,7 @@ Foam::label Foam::NTCHardSphere<CloudType>::collideCell
     // draw the candidates that raise it
     scalar& sigmaCrMax = sigmaCrMax_[celli];
     sigmaCrMax = max(sigmaCrMax, sigmaCrBound(parcels));
+    const scalar drawnMax = sigmaCrMax;
 
     scalar WMax = 0;
     for (const parcelType* p : parcels)
@@ -144,7 +145,10 @@ Foam::label Foam::NTCHardSphere<CloudType>::collideCell
         const scalar cr = mag(p.U() - q.U());
         const scalar sigmaCr = pi*sqr(0.5*(p.d() + q.d()))*cr;
 
-        if (!ntcSelection::accept(sigmaCr, sigmaCrMax, rnd_))
+        if
+        (
+            !ntcSelection::accept(sigmaCr, drawnMax, sigmaCrMax, rnd_, over_)
+        )
         {
             continue;
         }
@@ -203,8 +207,42 @@ void Foam::NTCHardSphere<CloudType>::writeFields(const scalarField& alpha)
     writeCellField(mesh, cloud, "nCandidates", dimless, nCandidates_);
     writeCellField(mesh, cloud, "nCollisions", dimless, nCollisions_);
 
+    // Step guards since the previous write
+    scalar perStepMax = 0;
+    label nCellsAbove = 0;
+    forAll(nParcelSteps_, celli)
+    {
+        if (nCollisions_[celli] >= 10)
+        {
+            const scalar perStep = 2*nCollisions_[celli]/nParcelSteps_[celli];
+            perStepMax = max(perStepMax, perStep);
+            nCellsAbove += (perStep > 1);
+        }
+    }
+    reduce(perStepMax, maxOp<scalar>());
+    reduce(nCellsAbove, sumOp<label>());
+    over_.reduce();
+
+    Info<< "    " << typeName << ": collisions per parcel per step since"
+        << " the last write largest " << perStepMax << " (" << nCellsAbove
+        << " cells above 1); candidates with acceptance probability above"
+        << " 1 " << over_.n << " (largest " << over_.largest << ")" << nl;
+
+    if (nCellsAbove || over_.n > 0)
+    {
+        WarningInFunction
+            << "deltaT " << mesh.time().deltaTValue() << " s is too long for"
+            << " the grain collisions in " << nCellsAbove << " cells (up to "
+            << perStepMax << " collisions per parcel per step), and "
+            << over_.n << " candidates had an acceptance probability above"
+            << " 1 (up to " << over_.largest << "): shorten deltaT in"
+            << " system/controlDict" << endl;
+    }
+
     nCandidates_ = 0;
     nCollisions_ = 0;
+    nParcelSteps_ = 0;
+    over_ = ntcSelection::excess();
 
     dictionary state;
     restartState::put(state, "random", rnd_);
@@ -255,6 +293,7 @@ void Foam::NTCHardSphere<CloudType>::collide
         remainder_.setSize(nCells, Zero);
         nCandidates_.setSize(nCells, Zero);
         nCollisions_.setSize(nCells, Zero);
+        nParcelSteps_.setSize(nCells, Zero);
     }
 
     // The parcels of each cell and the cell's solid volume fraction
@@ -298,6 +337,7 @@ void Foam::NTCHardSphere<CloudType>::collide
         const label cand = collideCell(celli, parcels, dt, accepted);
         nCandidates_[celli] += cand;
         nCollisions_[celli] += accepted;
+        nParcelSteps_[celli] += parcels.size();
         nCand += cand;
         nAccepted += accepted;
     }
@@ -354,7 +394,9 @@ Foam::NTCHardSphere<CloudType>::NTCHardSphere
     sigmaCrMax_(owner.mesh().nCells(), Zero),
     remainder_(owner.mesh().nCells(), Zero),
     nCandidates_(owner.mesh().nCells(), Zero),
-    nCollisions_(owner.mesh().nCells(), Zero)
+    nCollisions_(owner.mesh().nCells(), Zero),
+    nParcelSteps_(owner.mesh().nCells(), Zero),
+    over_()
 {
     checkCoeffs(dict);
 
@@ -406,7 +448,9 @@ Foam::NTCHardSphere<CloudType>::NTCHardSphere
     sigmaCrMax_(cm.sigmaCrMax_),
     remainder_(cm.remainder_),
     nCandidates_(cm.nCandidates_),
-    nCollisions_(cm.nCollisions_)
+    nCollisions_(cm.nCollisions_),
+    nParcelSteps_(cm.nParcelSteps_),
+    over_(cm.over_)
 {}
 
 
