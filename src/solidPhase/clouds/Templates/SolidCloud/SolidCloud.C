@@ -5,6 +5,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "SolidCloud.H"
+#include "cellExtent.H"
 #include "inputChecks.H"
 #include "randomStreams.H"
 #include "restartState.H"
@@ -562,6 +563,19 @@ void Foam::SolidCloud<CloudType>::motion
         Pstream::master() ? nInjected() - nInjectedBefore_ : 0;
 
     account_.closeStep(nBefore_, this->size(), nIn);
+
+    // The step criterion: the travel of each parcel over its cell
+    if (cellExtent_.size() != this->mesh().nCells())
+    {
+        cellExtent_ = smallestCellExtents(this->mesh());
+    }
+    const scalar dt = this->db().time().deltaTValue();
+    for (const parcelType& p : *this)
+    {
+        const scalar travel = mag(p.U())*dt/cellExtent_[p.cell()];
+        travelMax_ = max(travelMax_, travel);
+        nTravelAbove_ += (travel > 1);
+    }
 }
 
 
@@ -577,6 +591,26 @@ void Foam::SolidCloud<CloudType>::info()
     CloudType::info();
     solidCloudLayers::info(*this);
     account_.info(this->mesh().boundaryMesh());
+
+    if (time.writeTime())
+    {
+        reduce(travelMax_, maxOp<scalar>());
+        reduce(nTravelAbove_, sumOp<scalar>());
+        Info<< "    Grain step criterion since the last write: travel"
+            << " |U| deltaT/h largest " << travelMax_ << " ("
+            << nTravelAbove_ << " parcel-steps above 1)" << endl;
+        if (nTravelAbove_ > 0)
+        {
+            WarningInFunction
+                << "deltaT " << time.deltaTValue() << " s is too long for"
+                << " the grains of " << this->name() << ": parcels crossed"
+                << " up to " << travelMax_ << " times their cell in a step ("
+                << nTravelAbove_ << " parcel-steps): shorten deltaT in"
+                << " system/controlDict" << endl;
+        }
+        travelMax_ = 0;
+        nTravelAbove_ = 0;
+    }
 }
 
 
