@@ -112,7 +112,8 @@ DENSE = 1000
 
 
 def make_case(name, coupling, coeffs=None, n_gas=N_GAS, steps=STEPS, species="Ar",
-              eps=0.0, alpha=1.0, w_s=W_S, every=WRITE_EVERY, n_parcels=N_PARCELS):
+              eps=0.0, alpha=1.0, w_s=W_S, every=WRITE_EVERY, n_parcels=N_PARCELS,
+              d=D, dt=DT):
     """The box with one gas species and the grains above, meshed and
     filled."""
     case = copy_box(os.path.join(BUILD, name), species, n_gas, eps, alpha, coupling)
@@ -127,14 +128,14 @@ def make_case(name, coupling, coeffs=None, n_gas=N_GAS, steps=STEPS, species="Ar
     for key, value in (coeffs or {}).items():
         foam.set_entry(case, PROPS, f"subModels/{coupling}Coeffs/{key}", value)
     if n_parcels:
-        foam.set_entry(case, GRAINS, "regions/grain/d", D)
+        foam.set_entry(case, GRAINS, "regions/grain/d", d)
         foam.set_entry(case, GRAINS, "regions/grain/nParcels", n_parcels)
         foam.set_entry(case, GRAINS, "regions/grain/nParticle", w_s)
         foam.set_entry(case, GRAINS, "regions/grain/U0", f"({U_P0:g} 0 0)")
     else:
         foam.set_entry(case, GRAINS, "regions", "{}")   # no grain placed
-    foam.set_entry(case, CONTROL, "deltaT", DT)
-    foam.set_entry(case, CONTROL, "endTime", f"{steps*DT:.6g}")
+    foam.set_entry(case, CONTROL, "deltaT", dt)
+    foam.set_entry(case, CONTROL, "endTime", f"{steps*dt:.6g}")
     foam.set_entry(case, CONTROL, "writeInterval", every)
     foam.run(case, "blockMesh")
     foam.run(case, "rarefiedMultiphaseInitialise")
@@ -200,17 +201,24 @@ RUNS = {
                              "Ar", 0.0, 1.0, DENSE*W_S),
     "twoWayDirect-dense": ("twoWayDirect", {"randomSeed": 6}, "Ar", 0.0, 1.0,
                            DENSE*W_S),
+    # The stability matrix's W_g/W_s = 1e-6: grains of 10 nm in parcels of
+    # 1e6 W_g (alpha 0.013, 2400 times the gas's mass; a simulator meets
+    # about 10 grains per 10 ns step, 98 sub-steps), at the dense runs'
+    # checks
+    "twoWayDirect-ratio1e-6": ("twoWayDirect", {"randomSeed": 7}, "Ar", 0.0, 1.0,
+                               1e6*W_GAS, 1e-8, 1e-8),
 }
 
 
 @pytest.fixture(scope="module", params=list(RUNS))
 def box(request):
-    model, coeffs, species, eps, alpha, w_s = RUNS[request.param]
+    model, coeffs, species, eps, alpha, w_s, *size = RUNS[request.param]
+    d, dt = size or (D, DT)
     m_g, zeta = MASS[species], ZETA[species]
     dense = w_s > W_S
     steps, every = (DENSE_STEPS, DENSE_EVERY) if dense else (STEPS, WRITE_EVERY)
     case = make_case(f"box_{request.param}", model, coeffs, steps=steps, species=species,
-                     eps=eps, alpha=alpha, w_s=w_s, every=every)
+                     eps=eps, alpha=alpha, w_s=w_s, every=every, d=d, dt=dt)
     log = foam.run(case, "rarefiedMultiphaseFoam")
     times = foam.times(case)
     assert len(times) == steps//every + 1, times
@@ -228,7 +236,7 @@ def box(request):
     M = M_g + s0["Ms"]
     U_f = P0/M
     T_f = (E0 - 0.5*M*(U_f @ U_f))/(C_g + s0["Cs"])
-    return dict(model=request.param, m_g=m_g, case=case, times=times, gains=gains, counts=counts,
+    return dict(model=request.param, d=d, dt=dt, m_g=m_g, case=case, times=times, gains=gains, counts=counts,
                 cycled=cycled, dense=dense, every=every, states=states, M_g=M_g, C_g=C_g, P0=P0, E0=E0, U_f=U_f, T_f=T_f)
 
 
@@ -303,7 +311,7 @@ def test_collision_rate(box):
     measured = last.mean()
     n_s = end["Ns"]/V_CELL
     cbar = math.sqrt(8*K*end["Tg"]/(math.pi*box["m_g"]))
-    expected = end["Ng"]*n_s*math.pi*(D/2)**2*cbar*DT
+    expected = end["Ng"]*n_s*math.pi*(box["d"]/2)**2*cbar*box["dt"]
     # Poisson, and the sampling error of T_g (N_g simulators: relative
     # sqrt(2/(3 N_g)), half of it in <c>), which the dense runs' many
     # collisions resolve
