@@ -62,20 +62,25 @@ def make_case(name, eps):
     return case
 
 
+def parcels_at_writes(case):
+    """(write times, the first's parcel count, the count at each, whether
+    every parcel velocity is finite at each and the log holds no NaN)."""
+    times = foam.times(case)
+    counts, finite = [], True
+    for t in times:
+        U = foam.read_list(os.path.join(case, t, "lagrangian", "grains", "U"))
+        finite &= bool(np.all(np.isfinite(U)))
+        counts.append(snider.n_parcels(case, t))
+    with open(os.path.join(case, "log.rarefiedMultiphaseFoam")) as f:
+        finite &= "nan" not in f.read().lower()
+    return times, counts[0], counts, finite
+
+
 @pytest.mark.parametrize("eps", [1e-7, 1e-12])
 def test_bed_just_below_close_packing(eps):
     case = make_case(f"eps{eps:g}", eps)
-    times = foam.times(case)
-    n0 = snider.n_parcels(case, times[0])
-    finite, counts, averaged = True, [], []
-    for t in times:
-        lag = os.path.join(case, t, "lagrangian", "grains")
-        U = foam.read_list(os.path.join(lag, "U"))
-        finite &= bool(np.all(np.isfinite(U)))
-        counts.append(snider.n_parcels(case, t))
-        if t != times[0]:
-            averaged.append(snider.averaged_max(case, t))
-    finite &= "nan" not in open(os.path.join(case, "log.rarefiedMultiphaseFoam")).read().lower()
+    times, n0, counts, finite = parcels_at_writes(case)
+    averaged = [snider.averaged_max(case, t) for t in times[1:]]
     ok_n = report(f"eps {eps:g}: parcels kept, finite", finite and set(counts) == {n0},
                   f"{n0} parcels at every one of {len(times)} writes"
                   if set(counts) == {n0} else f"counts {counts}")
@@ -132,12 +137,7 @@ def test_long_steps(scale):
     rows = [(float(a), float(b)) for a, b in TRAVEL.findall(text)]
     travel = max(r[0] for r in rows) if rows else float("nan")
     warned = "is too long for the grains" in text
-    times = foam.times(case)
-    n0 = snider.n_parcels(case, times[0])
-    counts = [snider.n_parcels(case, t) for t in times]
-    finite = "nan" not in text.lower() and all(
-        np.all(np.isfinite(foam.read_list(os.path.join(case, t, "lagrangian", "grains", "U"))))
-        for t in times)
+    times, n0, counts, finite = parcels_at_writes(case)
     passed, s = snider.check(case, layer_bound=False)
     ok = report(f"deltaT {dt:g} s: step criterion",
                 len(rows) == len(times) - 1 and warned == (scale > 1)
