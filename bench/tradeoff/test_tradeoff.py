@@ -30,6 +30,22 @@ its analytic reference:
   heats the grains more slowly than the free-molecular sum: its heating
   error is below -20 % (the tutorial's README: 351 K against 383 K at
   1.5 ms, -39 %), so the study tells the two apart.
+
+The Snider --quick study (the narrow column to 0.2 s, one seed; about
+1.5 minutes) and its reference, the ideal settling:
+- free_fall_bed against hand-worked figures: Snider's column (alpha_0
+  0.3, 0.3 m) has its bed at g t^2/2 and its top at 0.3 - g t^2/2 until
+  they meet at t = sqrt(0.3/g) = 0.175 s, h = 0.15 m; every slab mean
+  conserves the grains (the column's alpha_0 height at every t);
+- the tutorial's setting follows the ideal settling: alpha(z) within
+  10 % of alpha_cp (RMS over the slabs) at 0.1, 0.15 and 0.2 s
+  (measured 3.3, 4.6, 3.0 %; the Poisson scatter of a packed slab's
+  parcel count alone is 4.2 %, so a wrong bed height or level shows
+  above it: one slab of 7.5 mm too high or low adds sqrt(1/40) = 16 %);
+- dual and cachedDual averaging give the same run (cachedDual caches
+  dual's volumes, doc/physics.md 5.4): the same errors to the last bit;
+- sixteen times fewer parcels are further from the ideal (a packed slab
+  then holds 36 parcels: Poisson scatter 17 %; measured 39.6 %).
 """
 
 import csv
@@ -124,3 +140,38 @@ def test_dust_cloud_stream_quick():
     loth = float(rows["Loth"]["heating"])
     ok_loth = report("Loth heats more slowly", loth < -0.2, f"heating {100*loth:+.1f} %")
     assert ok_all and ok_none and ok_fm and ok_loth
+
+
+def test_free_fall_bed():
+    g, height, alpha0 = 9.8, 0.3, 0.3
+    edges = np.linspace(0, height, 41)
+    worst = 0.0
+    for t in (0.05, 0.1, 0.15, 0.175, 0.3):
+        a, bed = tradeoff.snider.free_fall_bed(t, edges, alpha0, height, 0.6, g)
+        expect = min(g*t*t/2, 0.15)
+        worst = max(worst, abs(bed - expect), abs(float(np.sum(a*np.diff(edges)))
+                                                  - alpha0*height))
+    assert report("ideal settling", worst < 1e-12, f"largest deviation {worst:.1e}")
+
+
+def test_snider_quick():
+    subprocess.run([sys.executable, os.path.join(HERE, "tradeoff.py"), "snider", "--quick"],
+                   check=True, stdout=subprocess.DEVNULL)
+    with open(os.path.join(tradeoff.OUT, "snider", "tradeoff.csv")) as f:
+        rows = {r["setting"]: r for r in csv.DictReader(f)}
+    names = [s[0] for s in tradeoff.SNIDER_SETTINGS]
+    ok_all = report("every setting ran", sorted(rows) == sorted(names),
+                    f"{len(rows)} of {len(names)}")
+    times = ("t0.1", "t0.15", "t0.2")
+    base = rows["base"]
+    ok_base = report("the tutorial's setting within 10 % of the ideal settling",
+                     all(float(base[t]) < 0.1 for t in times),
+                     ", ".join(f"{t[1:]} s {100*float(base[t]):.1f} %" for t in times))
+    ok_dual = report("dual and cachedDual the same",
+                     all(rows["dual"][e] == base[e] for e in times),
+                     f"profile {rows['dual']['profile']} and {base['profile']}")
+    w16 = rows["weight16"]
+    ok_w16 = report("W x 16 further from the ideal",
+                    float(w16["profile"]) > float(base["profile"]),
+                    f"{100*float(w16['profile']):.1f} % against {100*float(base['profile']):.1f} %")
+    assert ok_all and ok_base and ok_dual and ok_w16

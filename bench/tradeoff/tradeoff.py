@@ -7,7 +7,7 @@ computes their errors against the scene's reference run, and writes a
 CSV, a Pareto picture (error against cost, the front marked) and a
 markdown report.
 
-    . etc/bashrc && bench/tradeoff/tradeoff.py SCENE [--quick] [--seeds N] [--doc]
+    . etc/bashrc && bench/tradeoff/tradeoff.py SCENE|all [--quick] [--seeds N] [--doc]
 
 Output in build/bench/tradeoff/<scene>/: tradeoff.csv, tradeoff.png,
 tradeoff.md; --doc also puts the report and the picture
@@ -50,6 +50,21 @@ dustCloudStream (tutorials/coupling/dustCloudStream)
     Cost: least CPU time over the seeds, over the oneWay runs' least.
     Full size: 0.5 ms, 3 seeds (12 minutes); --quick: 0.1 ms, 1 seed
     (2 minutes).
+
+snider (tutorials/solids/sniderSedimentation, doc/physics.md 7.1)
+    The narrow column (rmf.snider.narrow_column: 4 x 4 of the tutorial's
+    cells, its fill and parcel weight).  Reference: analytic, the ideal
+    settling (rmf.snider.free_fall_bed: free fall onto a bed that packs
+    at alpha_cp on arrival).  Settings, one change at a time from the
+    tutorial's: explicit and implicit packing, basic and dual averaging,
+    parcel weight x 4 and x 16, deltaT x 1/2 and x 2, cells x 1/2 and x 2
+    in each direction.  The seed is the initial positions'.  Errors:
+    alpha(z) of the parcels on the tutorial's 40 slabs (the same for
+    every mesh), RMS of the difference from the ideal's over alpha_cp,
+    at each of 0.1, 0.15, 0.2 and 0.6 s (t0.1 ...) and over all
+    (profile).  Cost: least CPU time over the seeds over the tutorial
+    setting's least.  Full size: 0.6 s, 3 seeds (10 minutes); --quick:
+    0.2 s, 1 seed (1.5 minutes).
 """
 
 import argparse
@@ -68,7 +83,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 PROJECT = os.path.dirname(os.path.dirname(HERE))
 sys.path.insert(0, os.path.join(PROJECT, "src", "python"))
 
-from rmf import erosion, foam, grainseries  # noqa: E402
+from rmf import erosion, foam, grainseries, snider  # noqa: E402
 
 sys.path.insert(0, os.path.join(PROJECT, "validation", "dragLaws"))
 from reference import cd_fm_closed, speed_moments  # noqa: E402
@@ -412,7 +427,122 @@ def dust_cloud_stream(quick, seeds):
                          judged=("U", "heating"), cost_label="oneWay's", base="oneWay")
 
 
-SCENES = {"erosionBox": erosion_box, "dustCloudStream": dust_cloud_stream}
+# ---------------------------------------------------------------------------
+# Scene: Snider sedimentation against the ideal settling's kinematics
+
+SNIDER_CELLS = 4            # the narrow column: 4 x 4 of the tutorial's cells
+SNIDER_SLABS = 40           # alpha(z) on the tutorial's 7.5 mm layers
+SNIDER_SETTINGS = [
+    # name, label, {packing, averaging, weight, dt, mesh}: factors of the
+    # tutorial's parcel weight, step and cells per direction
+    ("base", "twoSided, cachedDual, W, 1 ms, 4 x 4 x 40 cells (the tutorial's)", {}),
+    ("explicit", "v1912's explicit packing", {"packing": "explicit"}),
+    ("implicit", "v1912's implicit packing (eps 1e-2)", {"packing": "implicit"}),
+    ("basic", "basic averaging", {"averaging": "basic"}),
+    ("dual", "dual averaging (volumes recomputed)", {"averaging": "dual"}),
+    ("weight4", "parcel weight W x 4", {"weight": 4}),
+    ("weight16", "parcel weight W x 16", {"weight": 16}),
+    ("dtHalf", "deltaT x 1/2", {"dt": 0.5}),
+    ("dt2", "deltaT x 2", {"dt": 2}),
+    ("meshHalf", "mesh x 1/2 (2 x 2 x 20 cells)", {"mesh": 0.5}),
+    ("mesh2", "mesh x 2 (8 x 8 x 80 cells)", {"mesh": 2}),
+]
+
+
+def snider_case(dst, change, seed, end):
+    """The narrow Snider column with one setting changed; returns (case,
+    side)."""
+    case, side = snider.narrow_column(dst, SNIDER_CELLS)
+    init, props, control = ("system/grainsInitialiseDict", "constant/grainsProperties",
+                            "system/controlDict")
+    foam.set_entry(case, init, "randomSeed", seed)
+    foam.set_entry(case, control, "endTime", end)
+    if "packing" in change:
+        foam.set_entry(case, props, "subModels/packingModel", change["packing"])
+    if "averaging" in change:
+        foam.set_entry(case, props, "solution/averagingMethod", change["averaging"])
+    if "weight" in change:
+        k = change["weight"]
+        n = int(foam.get_entry(case, init, "regions/column/nParcels"))
+        w = float(foam.get_entry(case, init, "regions/column/nParticle"))
+        foam.set_entry(case, init, "regions/column/nParcels", round(n/k))
+        foam.set_entry(case, init, "regions/column/nParticle", f"{w*k:g}")
+    if "dt" in change:
+        dt = float(foam.get_entry(case, control, "deltaT"))*change["dt"]
+        foam.set_entry(case, control, "deltaT", f"{dt:g}")
+    if "mesh" in change:
+        n = round(SNIDER_CELLS*change["mesh"])
+        layers = round(SNIDER_SLABS*change["mesh"])
+        mesh = os.path.join(case, "system", "blockMeshDict")
+        with open(mesh) as f:
+            text = f.read()
+        old = f"({SNIDER_CELLS} {SNIDER_CELLS} {SNIDER_SLABS})"
+        if old not in text:
+            raise RuntimeError(f"{mesh}: no {old}")
+        with open(mesh, "w") as f:
+            f.write(text.replace(old, f"({n} {n} {layers})"))
+    return case, side
+
+
+def snider_scene(quick, seeds):
+    end = 0.2 if quick else 0.6
+    times = [t for t in snider.TIMES if float(t) <= end + 1e-9]
+    out = os.path.join(OUT, "snider")
+    os.makedirs(out, exist_ok=True)
+    rows, floors = [], {}
+    for seed in range(1, seeds + 1):
+        for name, label, change in SNIDER_SETTINGS:
+            case, side = snider_case(os.path.join(out, f"seed{seed}", name), change, seed, end)
+            for app in ("blockMesh", "rarefiedMultiphaseInitialise", "rarefiedMultiphaseFoam"):
+                foam.run(case, app)
+            height = float(foam.get_entry(case, "system/grainsInitialiseDict",
+                                          "regions/column/max").strip("()").split()[2])
+            edges = np.linspace(0, height, SNIDER_SLABS + 1)
+            area = side*side
+            alpha0 = float(snider.parcel_profile(case, "0", edges, area).mean())
+            row = {"setting": name, "label": label, "seed": seed,
+                   "cpu": cpu_time(os.path.join(case, "log.rarefiedMultiphaseFoam")),
+                   "alpha0": alpha0, "parcels": snider.n_parcels(case, "0")}
+            squares = []
+            for t in times:
+                a = snider.parcel_profile(case, t, edges, area)
+                ideal, _ = snider.free_fall_bed(float(t), edges, alpha0, height)
+                squares.append(np.mean((a - ideal)**2))
+                row["t" + t] = float(np.sqrt(squares[-1]))/snider.ALPHA_PACKED
+            row["profile"] = float(np.sqrt(np.mean(squares)))/snider.ALPHA_PACKED
+            # The noise floor of the measure in a packed slab: the Poisson
+            # scatter of its parcel count (independent of the model)
+            lag = os.path.join(case, "0", "lagrangian", snider.CLOUD)
+            v_parcel = float(np.mean(foam.read_list(os.path.join(lag, "nParticle"))*np.pi
+                                     * foam.read_list(os.path.join(lag, "d"))**3/6))
+            slab = snider.ALPHA_PACKED*area*(edges[1] - edges[0])/v_parcel
+            floors[name] = 1/math.sqrt(slab)
+            rows.append(row)
+            print(f"seed {seed} {name}: alpha(z) error {100*row['profile']:.1f} % ("
+                  + ", ".join(f"{t} s {100*row['t' + t]:.1f} %" for t in times)
+                  + f"), CPU {row['cpu']:.1f} s", flush=True)
+        base = next(r for r in rows if r["seed"] == seed and r["setting"] == "base")
+        for r in rows:
+            if r["seed"] == seed:
+                r["cost"] = r["cpu"]/base["cpu"]
+
+    errors = ["profile"] + ["t" + t for t in times]
+    note = (f"Snider sedimentation, the narrow column ({SNIDER_CELLS} x {SNIDER_CELLS} of "
+            f"the tutorial's cells, its fill and parcel weight), {end:g} s, {seeds} seed(s) of "
+            "the initial positions. Reference: the ideal settling (free fall onto a bed "
+            "that packs at alpha_cp on arrival; rmf.snider.free_fall_bed).  Errors: RMS over "
+            f"the {SNIDER_SLABS} slabs of 7.5 mm of the parcels' alpha(z) minus the "
+            "ideal's, over alpha_cp, at each time (t0.1 ...) and over all (profile).  "
+            "Noise floor: a packed slab's Poisson scatter 1/sqrt(N) is "
+            f"{100*floors['base']:.1f} % at the tutorial's weight, "
+            f"{100*floors['weight16']:.1f} % at W x 16.  "
+            "Cost: least CPU time over the seeds over the base's least.")
+    return write_outputs("snider", rows, errors, "profile", note,
+                         judged=tuple(errors), cost_label="the tutorial setting's")
+
+
+SCENES = {"erosionBox": erosion_box, "dustCloudStream": dust_cloud_stream,
+          "snider": snider_scene}
 
 
 def to_doc(scene):
@@ -436,19 +566,21 @@ def to_doc(scene):
 
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("scene", choices=sorted(SCENES))
+    parser.add_argument("scene", choices=sorted(SCENES) + ["all"],
+                        help="a scene, or all of them one after another")
     parser.add_argument("--quick", action="store_true", help="the CI size")
     parser.add_argument("--seeds", type=int, help="seeds per setting (default 3, quick 1)")
     parser.add_argument("--doc", action="store_true",
                         help="write the result into doc/speed-accuracy.md")
     args = parser.parse_args(argv)
     seeds = args.seeds or (1 if args.quick else 3)
-    summary, best = SCENES[args.scene](args.quick, seeds)
-    if args.doc:
-        to_doc(args.scene)
-    print(f"bench tradeoff {args.scene}: cheapest within {100*TARGET:.0f} %: "
-          + (f"{best['setting']} at {best['cost']:.3f} of the base setting's CPU time"
-             if best else "none"))
+    for scene in SCENES if args.scene == "all" else [args.scene]:
+        summary, best = SCENES[scene](args.quick, seeds)
+        if args.doc:
+            to_doc(scene)
+        print(f"bench tradeoff {scene}: cheapest within {100*TARGET:.0f} %: "
+              + (f"{best['setting']} at {best['cost']:.3f} of the base setting's CPU time"
+                 if best else "none"))
     return 0
 
 

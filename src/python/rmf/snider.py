@@ -99,6 +99,40 @@ def narrow_column(dst, cells):
     return case, side
 
 
+GRAVITY = 9.8
+
+
+def parcel_profile(case, time, edges, area):
+    """alpha(z) of the parcels themselves at time: the grains' volume
+    (nParticle pi d^3/6 per parcel) in each slab between the heights
+    edges, over the slab's volume (area x height).  Independent of the
+    mesh, so runs on different meshes compare on the same slabs."""
+    lag = os.path.join(case, time, "lagrangian", CLOUD)
+    z = foam.read_positions(os.path.join(lag, "positions"))[:, 2]
+    volume = (foam.read_list(os.path.join(lag, "nParticle"))
+              * np.pi*foam.read_list(os.path.join(lag, "d"))**3/6)
+    grains, _ = np.histogram(z, edges, weights=volume)
+    return grains/(area*np.diff(edges))
+
+
+def free_fall_bed(t, edges, alpha0, height, alpha_packed=ALPHA_PACKED, g=GRAVITY):
+    """Slab means of alpha(z) at t of the ideal settling: a column of
+    alpha0 filling [0, height] at rest at t = 0 falls freely (every grain
+    at g t) onto a bed that packs at alpha_packed the moment grains reach
+    it.  The column's top is at height - g t^2/2; grains reach the bed
+    surface h at g t + dh/dt, so alpha0 (g t + dh/dt) = alpha_packed dh/dt
+    and h = alpha0/(alpha_packed - alpha0) g t^2/2, until the column is
+    used up at h = alpha0 height/alpha_packed (Snider's case: t = 0.175 s,
+    h = 0.150 m).  Returns (slab means, h)."""
+    fall = 0.5*g*t*t
+    bed = min(alpha0/(alpha_packed - alpha0)*fall, alpha0*height/alpha_packed)
+    top = max(height - fall, bed)
+    lo, hi = edges[:-1], edges[1:]
+    packed = np.clip(np.minimum(hi, bed) - lo, 0, None)
+    falling = np.clip(np.minimum(hi, top) - np.maximum(lo, bed), 0, None)
+    return (alpha_packed*packed + alpha0*falling)/(hi - lo), bed
+
+
 def layers(case):
     """Heights of the cell layers and, per cell, its layer index."""
     z = foam.cell_centres(case)[:, 2]
