@@ -65,6 +65,14 @@ snider (tutorials/solids/sniderSedimentation, doc/physics.md 7.1)
     (profile).  Cost: least CPU time over the seeds over the tutorial
     setting's least.  Full size: 0.6 s, 3 seeds (10 minutes); --quick:
     0.2 s, 1 seed (1.5 minutes).
+
+apolloPSI (tutorials/psi/apolloScaledPSI, demo, serial): bench/tradeoff/apollo.py
+    Reference: the finest affordable run, W_g and deltaT halved.
+    Settings: the coupling types, the grain models on the same dust, the
+    gas and parcel weights, the step, the mesh.  Errors: surface drop on
+    the axis, shock standoff, ejecta speed and angle, max alpha.  Full
+    size: 60 us, --seeds 2 (30 minutes); --quick: 20 us, 6 settings, 1
+    seed (3 minutes).
 """
 
 import argparse
@@ -541,8 +549,14 @@ def snider_scene(quick, seeds):
                          judged=tuple(errors), cost_label="the tutorial setting's")
 
 
+def apollo_psi(quick, seeds):
+    """The scaled Apollo PSI scene: bench/tradeoff/apollo.py."""
+    import apollo
+    return write_outputs("apolloPSI", **apollo.study(quick, seeds))
+
+
 SCENES = {"erosionBox": erosion_box, "dustCloudStream": dust_cloud_stream,
-          "snider": snider_scene}
+          "snider": snider_scene, "apolloPSI": apollo_psi}
 
 
 def to_doc(scene):
