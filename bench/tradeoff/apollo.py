@@ -86,7 +86,6 @@ another job on the other core): cost ratios within that are not
 resolved.
 """
 
-import math
 import os
 import re
 import shutil
@@ -225,12 +224,6 @@ def observe(case, end):
             "alphaValue": at_end("alpha", "max")}
 
 
-def _relative(x, ref):
-    if not (math.isfinite(x) and math.isfinite(ref)) or ref == 0:
-        return float("nan")
-    return float(x/ref - 1)
-
-
 def _spread(rows, key):
     v = np.array([r[key] for r in rows], float)
     v = v[np.isfinite(v)]
@@ -247,7 +240,7 @@ def study(quick, seeds, names=None):
     over seeds 1..seeds, the others seed 1) and returns the arguments of
     tradeoff.write_outputs: dict(rows=rows, errors=[...], main_error=...,
     note=..., judged=(...), cost_label=..., base=...)."""
-    from tradeoff import OUT, cpu_time
+    from tradeoff import OUT, cpu_time, relative_error
     end = END_QUICK if quick else END_FULL
     write = WRITE_QUICK if quick else WRITE_FULL
     out = os.path.join(OUT, "apolloPSI")
@@ -275,7 +268,7 @@ def study(quick, seeds, names=None):
         ref = next(b for b in rows if b["setting"] == "reference" and b["seed"] == r["seed"])
         r["cost"] = r["cpu"]/base["cpu"]
         for e in ERRORS:
-            r[e] = _relative(r[e + "Value"], ref[e + "Value"])
+            r[e] = relative_error(r[e + "Value"], ref[e + "Value"])
 
     refs = [r for r in rows if r["setting"] == "reference"]
     noise = "; ".join(f"{e} {_spread(refs, e + 'Value')}" for e in ERRORS)
