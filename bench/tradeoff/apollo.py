@@ -281,7 +281,7 @@ def study(quick, seeds, names=None):
             "standoff = shock standoff, mean of the writes from "
             f"{AVERAGE_FROM*1e6*end:.3g} us; "
             "ejecta = ejecta's mean speed at the end; angle = their mean ejection angle; "
-            "alpha = largest alpha.grains (– : not defined, e.g. no ejecta).  Cost (the "
-            "column 'cost / ref'): the solver's CPU time over the base's.")
+            "alpha = largest alpha.grains (– : not defined, e.g. no ejecta).  Cost: the "
+            "solver's CPU time over the base's.")
     return dict(rows=rows, errors=list(ERRORS), main_error=MAIN_ERROR, note=note,
                 judged=JUDGED, cost_label="the base's", base="base")

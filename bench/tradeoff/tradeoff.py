@@ -200,7 +200,7 @@ def write_outputs(scene, rows, errors, main_error, note, judged=None,
                                     for e in judged)]
     best = min(ok, key=lambda s: s["cost"]) if ok else None
     lines = [f"# Speed-accuracy: {scene}", "", note, "",
-             "| setting | what | seeds | least CPU [s] | cost / ref | "
+             "| setting | what | seeds | least CPU [s] | cost / base | "
              + " | ".join(f"{e} error" for e in errors) + " | Pareto |",
              "|---|---|---|---|---|" + "---|"*len(errors) + "---|"]
     for i, s in enumerate(summary):
