@@ -87,7 +87,6 @@ resolved.
 """
 
 import os
-import re
 import shutil
 import subprocess
 import sys
@@ -137,18 +136,6 @@ SEEDED = ("constant/dsmcProperties", "constant/grainsProperties",
           "system/grainsInitialiseDict", "settings/stochastic", "settings/hybrid")
 
 
-def _edit(path, pattern, replacement, count=1):
-    """Replace a regular expression in a file's text (the dictionaries that
-    #include others: foamDictionary -set would write them expanded)."""
-    with open(path) as f:
-        text = f.read()
-    text, n = re.subn(pattern, replacement, text)
-    if n < count:
-        raise RuntimeError(f"{path}: {pattern!r} found {n} times, expected {count}")
-    with open(path, "w") as f:
-        f.write(text)
-
-
 def prepare(case, changes, seed, end, write):
     """A copy of the tutorial in case (its 0, constant, system and settings
     and Allrun) with the changes of a setting and every randomSeed set."""
@@ -156,7 +143,7 @@ def prepare(case, changes, seed, end, write):
     shutil.copytree(os.path.join(TUTORIAL, "settings"), os.path.join(case, "settings"))
     shutil.copy(os.path.join(TUTORIAL, "Allrun"), case)
     for path in SEEDED:
-        _edit(os.path.join(case, path), r"(randomSeed\s+)\d+;", rf"\g<1>{seed};")
+        foam.substitute(os.path.join(case, path), r"(randomSeed\s+)\d+;", rf"\g<1>{seed};")
     demo = "settings/demo"
 
     def get(key):
@@ -181,13 +168,13 @@ def prepare(case, changes, seed, end, write):
         foam.set_entry(case, demo, key, value)
     props = os.path.join(case, "constant", "grainsProperties")
     if "averaging" in changes:
-        _edit(props, r"(averagingSteps\s+)\d+;", rf"\g<1>{changes['averaging']};")
+        foam.substitute(props, r"(averagingSteps\s+)\d+;", rf"\g<1>{changes['averaging']};")
     coupling = changes.get("coupling")
     if coupling:
-        _edit(props, r"(interphaseCoupling\s+)twoWayIndirect;", rf"\g<1>{coupling};")
+        foam.substitute(props, r"(interphaseCoupling\s+)twoWayIndirect;", rf"\g<1>{coupling};")
     if coupling == "twoWayDirect":      # its Coeffs know no averagingSteps
-        _edit(props, r"twoWayIndirectCoeffs", "twoWayDirectCoeffs")
-        _edit(props, r"\n\s*averagingSteps\s+\d+;[^\n]*", "")
+        foam.substitute(props, r"twoWayIndirectCoeffs", "twoWayDirectCoeffs")
+        foam.substitute(props, r"\n\s*averagingSteps\s+\d+;[^\n]*", "")
     return case
 
 

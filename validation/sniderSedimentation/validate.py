@@ -34,7 +34,6 @@ the parallel one.
 import argparse
 import concurrent.futures
 import os
-import re
 import sys
 import time
 
@@ -82,13 +81,8 @@ def prepare(build, name, scale, end, e=None, entries=None):
     if e is not None:
         # Every restitution of the dictionary: walls (a list, which
         # foamDictionary cannot address), time scales, correction limit
-        path = os.path.join(case, PROPS)
-        with open(path) as f:
-            text = f.read()
-        text, n = re.subn(r"(?m)^(\s*e\s+)0\.85;", rf"\g<1>{e};", text)
-        assert n >= 5, f"{n} restitution entries found in {path}"
-        with open(path, "w") as f:
-            f.write(text)
+        foam.substitute(os.path.join(case, PROPS), r"(?m)^(\s*e\s+)0\.85;", rf"\g<1>{e};",
+                        count=5)
     foam.run(case, "blockMesh")
     foam.run(case, "rarefiedMultiphaseInitialise")
     return case

@@ -153,6 +153,20 @@ def remove_entry(case, dict_path, entry):
                    check=True, stdout=subprocess.DEVNULL)
 
 
+def substitute(path, pattern, replacement, count=1):
+    """Replace a regular expression in a file's text, in place; raises
+    RuntimeError where it is found fewer than count times.  For the
+    dictionaries that #include others, which foamDictionary -set would
+    write out expanded."""
+    with open(path) as f:
+        text = f.read()
+    text, n = re.subn(pattern, replacement, text)
+    if n < count:
+        raise RuntimeError(f"{path}: {pattern!r} found {n} times, expected {count}")
+    with open(path, "w") as f:
+        f.write(text)
+
+
 def get_entry(case, dict_path, entry):
     """Value of one entry of a case dictionary (foamDictionary -value)."""
     return subprocess.run(["foamDictionary", "-entry", entry, "-value",

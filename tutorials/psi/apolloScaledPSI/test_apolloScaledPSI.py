@@ -135,13 +135,7 @@ def prepare(name, seed=1, steps=STEPS):
         "log.*", "observables", "processor*",
         "[1-9]*", "polyMesh", "lagrangian", "uniform", "*SigmaTcRMax"))
     for path in SEEDED:
-        path = os.path.join(case, path)
-        with open(path) as f:
-            text = f.read()
-        text, count = re.subn(r"(randomSeed\s+)\d+;", rf"\g<1>{seed};", text)
-        assert count, f"{path}: no randomSeed"
-        with open(path, "w") as f:
-            f.write(text)
+        foam.substitute(os.path.join(case, path), r"(randomSeed\s+)\d+;", rf"\g<1>{seed};")
     subprocess.run([os.path.join(case, "Allclean")], check=True,
                    stdout=subprocess.DEVNULL)
     dt = float(foam.get_entry(case, "settings/demo", "deltaT"))
