@@ -460,7 +460,7 @@ SNIDER_SETTINGS = [
 def snider_case(dst, change, seed, end):
     """The narrow Snider column with one setting changed; returns (case,
     side)."""
-    case, side = snider.narrow_column(dst, SNIDER_CELLS)
+    case, side = snider.narrow_column(dst, SNIDER_CELLS, change.get("mesh", 1))
     init, props, control = ("system/grainsInitialiseDict", "constant/grainsProperties",
                             "system/controlDict")
     foam.set_entry(case, init, "randomSeed", seed)
@@ -478,17 +478,6 @@ def snider_case(dst, change, seed, end):
     if "dt" in change:
         dt = float(foam.get_entry(case, control, "deltaT"))*change["dt"]
         foam.set_entry(case, control, "deltaT", f"{dt:g}")
-    if "mesh" in change:
-        n = round(SNIDER_CELLS*change["mesh"])
-        layers = round(SNIDER_SLABS*change["mesh"])
-        mesh = os.path.join(case, "system", "blockMeshDict")
-        with open(mesh) as f:
-            text = f.read()
-        old = f"({SNIDER_CELLS} {SNIDER_CELLS} {SNIDER_SLABS})"
-        if old not in text:
-            raise RuntimeError(f"{mesh}: no {old}")
-        with open(mesh, "w") as f:
-            f.write(text.replace(old, f"({n} {n} {layers})"))
     return case, side
 
 
@@ -520,9 +509,7 @@ def snider_scene(quick, seeds):
             row["profile"] = float(np.sqrt(np.mean(squares)))/snider.ALPHA_PACKED
             # The noise floor of the measure in a packed slab: the Poisson
             # scatter of its parcel count (independent of the model)
-            lag = os.path.join(case, "0", "lagrangian", snider.CLOUD)
-            v_parcel = float(np.mean(foam.read_list(os.path.join(lag, "nParticle"))*np.pi
-                                     * foam.read_list(os.path.join(lag, "d"))**3/6))
+            v_parcel = float(np.mean(snider.parcel_volumes(case, "0")))
             slab = snider.ALPHA_PACKED*area*(edges[1] - edges[0])/v_parcel
             floors[name] = 1/math.sqrt(slab)
             rows.append(row)

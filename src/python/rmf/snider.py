@@ -77,20 +77,22 @@ TUTORIAL = os.path.join(foam.PROJECT_DIR, "tutorials", "solids", "sniderSediment
 TUTORIAL_SIDE, TUTORIAL_CELLS = 0.138, 15
 
 
-def narrow_column(dst, cells):
+def narrow_column(dst, cells, resolution=1):
     """Fresh set-up (not meshed) of the tutorial in a column of cells x
-    cells of its 15 x 15 cells (the same cells, 40 layers, side
-    0.138 cells/15 m), its fill cut to the column and its parcel count
-    scaled with the area, so that alpha_0 and the parcel weight stay the
-    tutorial's; returns (case, side)."""
+    cells of its 15 x 15 cells (40 layers, side 0.138 cells/15 m), its
+    fill cut to the column and its parcel count scaled with the area, so
+    that alpha_0 and the parcel weight stay the tutorial's; resolution
+    multiplies the cells in each direction (1: the tutorial's cells);
+    returns (case, side)."""
     side = TUTORIAL_SIDE*cells/TUTORIAL_CELLS
     case = foam.copy_setup(TUTORIAL, dst)
     mesh = os.path.join(case, "system", "blockMeshDict")
+    n, layers = round(cells*resolution), round(40*resolution)
     with open(mesh) as f:
         text = f.read()
     with open(mesh, "w") as f:
         f.write(text.replace(f"{TUTORIAL_SIDE:g}", f"{side:.6g}").replace(
-            f"({TUTORIAL_CELLS} {TUTORIAL_CELLS} 40)", f"({cells} {cells} 40)"))
+            f"({TUTORIAL_CELLS} {TUTORIAL_CELLS} 40)", f"({n} {n} {layers})"))
     init = "system/grainsInitialiseDict"
     full = int(foam.get_entry(TUTORIAL, init, "regions/column/nParcels"))
     foam.set_entry(case, init, "regions/column/max", f"({side:.6g} {side:.6g} 0.3)")
@@ -102,6 +104,13 @@ def narrow_column(dst, cells):
 GRAVITY = 9.8
 
 
+def parcel_volumes(case, time):
+    """The grains' volume of each parcel at time, nParticle pi d^3/6."""
+    lag = os.path.join(case, time, "lagrangian", CLOUD)
+    return (foam.read_list(os.path.join(lag, "nParticle"))
+            * np.pi*foam.read_list(os.path.join(lag, "d"))**3/6)
+
+
 def parcel_profile(case, time, edges, area):
     """alpha(z) of the parcels themselves at time: the grains' volume
     (nParticle pi d^3/6 per parcel) in each slab between the heights
@@ -109,9 +118,7 @@ def parcel_profile(case, time, edges, area):
     mesh, so runs on different meshes compare on the same slabs."""
     lag = os.path.join(case, time, "lagrangian", CLOUD)
     z = foam.read_positions(os.path.join(lag, "positions"))[:, 2]
-    volume = (foam.read_list(os.path.join(lag, "nParticle"))
-              * np.pi*foam.read_list(os.path.join(lag, "d"))**3/6)
-    grains, _ = np.histogram(z, edges, weights=volume)
+    grains, _ = np.histogram(z, edges, weights=parcel_volumes(case, time))
     return grains/(area*np.diff(edges))
 
 
@@ -160,10 +167,7 @@ def poisson_max(case, time, alpha=ALPHA_PACKED):
     Poisson number of parcels with mean alpha: the (1 - 1/n) quantile
     over the n cells below BED_TOP (parcel volume and weight of the run)."""
     from scipy.stats import poisson
-    lag = os.path.join(case, time, "lagrangian", CLOUD)
-    d = foam.read_list(os.path.join(lag, "d"))
-    w = foam.read_list(os.path.join(lag, "nParticle"))
-    v_parcel = float(np.mean(w*np.pi*d**3/6))
+    v_parcel = float(np.mean(parcel_volumes(case, time)))
     z = foam.cell_centres(case)[:, 2]
     volume = foam.cell_volumes(case)
     bed = z < BED_TOP
