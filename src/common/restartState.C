@@ -7,6 +7,7 @@
 #include "restartState.H"
 #include "Time.H"
 #include "cloud.H"
+#include "polyMesh.H"
 
 #include <cstring>
 #include <limits>
@@ -61,6 +62,48 @@ IOobject stateIO
     );
 }
 
+
+// Who wrote a state: the processor, the number of processors and, when db
+// is a mesh, its number of cells and the sum of its cell centres (a case
+// decomposed anew gives each processor other cells)
+dictionary writer(const objectRegistry& db)
+{
+    dictionary dict;
+    dict.add("processor", Pstream::myProcNo());
+    dict.add("nProcessors", Pstream::nProcs());
+    const polyMesh* meshPtr = dynamic_cast<const polyMesh*>(&db);
+    if (meshPtr)
+    {
+        dict.add("nCells", meshPtr->nCells());
+        restartState::put(dict, "cellCentreSum", sum(meshPtr->cellCentres()));
+    }
+    return dict;
+}
+
+
+// Does the writer recorded in a state describe this processor's mesh?
+// (a state without the record, written before it existed, is taken)
+bool sameWriter(const dictionary& recorded, const dictionary& now)
+{
+    if
+    (
+        recorded.get<label>("processor") != now.get<label>("processor")
+     || recorded.get<label>("nProcessors") != now.get<label>("nProcessors")
+     || recorded.getOrDefault<label>("nCells", -1)
+     != now.getOrDefault<label>("nCells", -1)
+    )
+    {
+        return false;
+    }
+    if (now.found("cellCentreSum"))
+    {
+        const vector a(recorded.get<vector>("cellCentreSum"));
+        const vector b(now.get<vector>("cellCentreSum"));
+        return mag(a - b) <= 1e-10*max(mag(b), VSMALL);
+    }
+    return true;
+}
+
 } // End anonymous namespace
 
 
@@ -77,11 +120,29 @@ Foam::dictionary Foam::restartState::read
     (
         stateIO(db, cloudName, owner, IOobject::READ_IF_PRESENT)
     );
-    if (dict.size())
+    if (dict.empty())
     {
-        Info<< "    restart state of " << owner << " read from "
-            << dict.objectPath() << endl;
+        return dict;
     }
+
+    // A state copied in from another processor (decomposePar links or
+    // copies the case's uniform/, which reconstructPar took from
+    // processor0) would give every processor the same random streams
+    const dictionary* recorded = dict.findDict("writtenBy");
+    if (recorded && !sameWriter(*recorded, writer(db)))
+    {
+        WarningInFunction
+            << "Restart state " << dict.objectPath()
+            << " was written by processor "
+            << recorded->get<label>("processor") << " of "
+            << recorded->get<label>("nProcessors")
+            << " on another decomposition (case decomposed anew, or"
+            << " reconstructed): " << owner << " starts afresh" << endl;
+        return dictionary();
+    }
+
+    Info<< "    restart state of " << owner << " read from "
+        << dict.objectPath() << endl;
     return dict;
 }
 
@@ -96,6 +157,7 @@ void Foam::restartState::write
 {
     localIOdictionary dict(stateIO(db, cloudName, owner, IOobject::NO_READ));
     dict.merge(state);
+    dict.add("writtenBy", writer(db), true);
     const Time& time = db.time();
 
     // Every scalar with the digits that read back to the same double
