@@ -175,7 +175,17 @@ def set_value(case, row, value):
     elif value is None:
         foam.remove_entry(case, row.file, row.entry)
     else:
-        foam.set_entry(case, row.file, row.entry, value)
+        try:
+            foam.set_entry(case, row.file, row.entry, value)
+        except subprocess.CalledProcessError:
+            # An optional sub-dictionary the case leaves out (controlDict's
+            # loadBalance): foamDictionary -set makes no parents
+            for i in range(1, len(row.scope) + 1):
+                parent = "/".join(row.scope[:i])
+                if subprocess.run(["foamDictionary", "-entry", parent, path],
+                                  capture_output=True).returncode != 0:
+                    foam.set_entry(case, row.file, parent, "{}")
+            foam.set_entry(case, row.file, row.entry, value)
 
 
 class edited:

@@ -18,7 +18,9 @@ Description
     default grains).  After each step a progress line gives the simulated
     time, the wall time used and an estimate of the wall time left.  A
     time directory whose write did not finish (a killed run, a full disk)
-    is set aside at the restart (writeGuard; doc/physics.md 1.4).
+    is set aside at the restart (writeGuard; doc/physics.md 1.4).  A
+    parallel run logs its load balance at every write, and may write the
+    cost per cell and stop to re-balance (loadBalance; doc/physics.md 1.5).
 
 \*---------------------------------------------------------------------------*/
 
@@ -82,6 +84,11 @@ int main(int argc, char *argv[])
         writeGuard::end(runTime, runTime.write());
 
         progress.report();
+
+        if (phases.stopToRebalance())
+        {
+            break;
+        }
     }
 
     Info<< "End\n" << endl;

@@ -24,6 +24,10 @@ Description
     src/solidPhase/regionFills).  Each phase is filled only when its
     dictionary exists.
 
+    With loadBalance { cellCost yes; } in system/controlDict it also writes
+    the field cellCost, uniform (nothing measured yet), for decomposePar's
+    weightField (loadBalance, doc/physics.md 1.5).
+
     Errors raised (FatalIOError, file/keyword/value/valid range): those of
     the fills; randomSeed outside [0, 2000]; an entry of regions that is
     not a dictionary.
@@ -38,6 +42,7 @@ Description
 #include "inputChecks.H"
 #include "keywordChecks.H"
 #include "randomStreams.H"
+#include "loadBalance.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -222,6 +227,10 @@ int main(int argc, char *argv[])
     if (inputChecks::keywordRecord::active())
     {
         inputChecks::keywordRecord::print(runTime.path());
+    }
+    else
+    {
+        loadBalance::writeInitial(mesh);
     }
 
     runTime.printExecutionTime(Info);

@@ -66,6 +66,8 @@ Foam::rarefiedMultiphaseSystem::rarefiedMultiphaseSystem
     const fvMesh& mesh,
     const word& cloudName
 )
+:
+    balance_(mesh)
 {
     if (present(mesh, "dsmcProperties"))
     {
@@ -123,12 +125,23 @@ void Foam::rarefiedMultiphaseSystem::evolve()
     // Steps 1-3: gas inflow, move, collisions
     if (gas_.valid())
     {
+        balance_.begin();
         gas_->evolve();
+
+        const auto& occupancy = gas_->cellOccupancy();
+        labelList perCell(occupancy.size());
+        forAll(occupancy, celli)
+        {
+            perCell[celli] = occupancy[celli].size();
+        }
+        balance_.end(loadBalance::gas, perCell);
     }
 
-    // Step 4: the gas on the parcels, then the solid step
     if (grains_.valid())
     {
+        balance_.begin();
+
+        // Step 4: the gas on the parcels, then the solid step
         grains_->coupleParcels(gas_.get());
         if (gas_.valid())
         {
@@ -136,13 +149,17 @@ void Foam::rarefiedMultiphaseSystem::evolve()
             carrier_->update(grains_->gasNow());
         }
         grains_->evolve();
+
+        // Step 5: the gas side of two-way models
+        if (gas_.valid())
+        {
+            grains_->coupleGas(gas_());
+        }
+
+        balance_.end(loadBalance::grains, grains_->parcelsPerCell());
     }
 
-    // Step 5: the gas side of two-way models
-    if (grains_.valid() && gas_.valid())
-    {
-        grains_->coupleGas(gas_());
-    }
+    balance_.endStep();
 }
 
 

@@ -6,6 +6,7 @@
 
 #include "OneWayCoupling.H"
 #include "gasCloud.H"
+#include "cellTimer.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -87,6 +88,7 @@ void Foam::OneWayCoupling<CloudType>::parcelForcesAndHeat(gasCloud* gasPtr)
 
     // The parcels cell by cell: each cell's run [start, end) of the list
     const auto parcels = freeMolecularSums::byCell(cloud);
+    cellTimer timer(cloud.mesh());
     for (label start = 0, end = 0; start < parcels.size(); start = end)
     {
         const label celli = parcels[start]->cell();
@@ -98,6 +100,7 @@ void Foam::OneWayCoupling<CloudType>::parcelForcesAndHeat(gasCloud* gasPtr)
         const auto& inCell = occupancy[celli];
         if (!inCell.empty())
         {
+            timer.start();
             actOnCell
             (
                 celli,
@@ -106,6 +109,7 @@ void Foam::OneWayCoupling<CloudType>::parcelForcesAndHeat(gasCloud* gasPtr)
                 Wg,
                 dt
             );
+            timer.stop(celli);
         }
     }
 }

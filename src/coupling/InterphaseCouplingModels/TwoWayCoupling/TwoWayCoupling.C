@@ -6,6 +6,7 @@
 
 #include "TwoWayCoupling.H"
 #include "gasCloud.H"
+#include "cellTimer.H"
 #include "inputChecks.H"
 #include "keywordChecks.H"
 #include "randomStreams.H"
@@ -468,6 +469,7 @@ void Foam::TwoWayCoupling<CloudType>::coupleGas(gasCloud& gas)
 {
     const scalar dt = this->owner().db().time().deltaTValue();
     const auto& occupancy = gas.cellOccupancy();
+    cellTimer timer(this->owner().mesh());
 
     forAll(partners_, celli)
     {
@@ -478,7 +480,9 @@ void Foam::TwoWayCoupling<CloudType>::coupleGas(gasCloud& gas)
             continue;
         }
 
+        timer.start();
         const label nAccepted = collideCell(celli, inCell, partners, dt);
+        timer.stop(celli);
         counts_.probabilityMax =
             max(counts_.probabilityMax, scalar(nAccepted)/inCell.size());
     }

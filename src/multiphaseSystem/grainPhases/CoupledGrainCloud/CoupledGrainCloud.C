@@ -87,4 +87,16 @@ void Foam::CoupledGrainCloud<CloudType>::coupleGas(gasCloud& gas)
 }
 
 
+template<class CloudType>
+Foam::labelList Foam::CoupledGrainCloud<CloudType>::parcelsPerCell() const
+{
+    labelList n(cloud_.mesh().nCells(), Zero);
+    for (const auto& p : cloud_)
+    {
+        ++n[p.cell()];
+    }
+    return n;
+}
+
+
 // ************************************************************************* //

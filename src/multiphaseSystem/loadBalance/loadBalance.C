@@ -1,0 +1,256 @@
+/*---------------------------------------------------------------------------*\
+  rarefiedMultiphaseFoam
+  Copyright (C) 2026 The rarefiedMultiphaseFoam authors
+  SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
+\*---------------------------------------------------------------------------*/
+
+#include "loadBalance.H"
+#include "cellTimer.H"
+#include "inputChecks.H"
+#include "keywordChecks.H"
+#include "profilingPstream.H"
+#include "Pair.H"
+
+#include <ctime>
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+
+using namespace Foam;
+
+// system/controlDict's loadBalance (empty when absent), checked
+dictionary settings(const fvMesh& mesh)
+{
+    const dictionary dict
+    (
+        mesh.time().controlDict().subOrEmptyDict("loadBalance")
+    );
+    inputChecks::rejectUnknown(dict, {"cellCost", "maxImbalance"});
+    return dict;
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::scalar Foam::loadBalance::cpuSeconds()
+{
+    return scalar(std::clock())/CLOCKS_PER_SEC;
+}
+
+
+Foam::scalar Foam::loadBalance::communication()
+{
+    scalar sum = 0;
+    for (const scalar t : profilingPstream::times())
+    {
+        sum += t;
+    }
+    return sum;
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::loadBalance::loadBalance(const fvMesh& mesh)
+:
+    mesh_(mesh),
+    maxImbalance_
+    (
+        inputChecks::getInterval
+        (
+            settings(mesh), "maxImbalance", 1, VGREAT, true, true, false,
+            VGREAT
+        )
+    ),
+    cost_(),
+    resetCost_(false),
+    computed_(Zero),
+    communicated_(0),
+    carried_(0),
+    cpuStart_(0),
+    commStart_(0),
+    costStart_(0),
+    stop_(false)
+{
+    if (inputChecks::getBoolOrDefault(settings(mesh), "cellCost", false))
+    {
+        cost_.reset
+        (
+            new volScalarField
+            (
+                IOobject
+                (
+                    cellTimer::fieldName,
+                    mesh.time().timeName(),
+                    mesh,
+                    IOobject::NO_READ,
+                    IOobject::AUTO_WRITE
+                ),
+                mesh,
+                dimensionedScalar(dimTime, Zero)
+            )
+        );
+    }
+
+    if (Pstream::parRun())
+    {
+        profilingPstream::enable();
+    }
+}
+
+
+// * * * * * * * * * * * * * * Static Member Functions  * * * * * * * * * * //
+
+void Foam::loadBalance::writeInitial(const fvMesh& mesh)
+{
+    IOobject io
+    (
+        cellTimer::fieldName,
+        mesh.time().timeName(),
+        mesh,
+        IOobject::NO_READ,
+        IOobject::NO_WRITE,
+        false
+    );
+    if
+    (
+        inputChecks::getBoolOrDefault(settings(mesh), "cellCost", false)
+     && !io.typeHeaderOk<volScalarField>(false)
+    )
+    {
+        volScalarField(io, mesh, dimensionedScalar("uniform", dimTime, 1.0)).write();
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::loadBalance::begin()
+{
+    if (resetCost_)
+    {
+        cost_->primitiveFieldRef() = Zero;
+        resetCost_ = false;
+    }
+
+    cpuStart_ = cpuSeconds();
+    commStart_ = communication();
+    costStart_ = cost_.valid() ? sum(cost_->primitiveField()) : 0;
+}
+
+
+void Foam::loadBalance::end(const phase which, const labelUList& perCell)
+{
+    const scalar comm = communication() - commStart_;
+    const scalar spent = cpuSeconds() - cpuStart_ - comm;
+    computed_[which] += spent;
+    communicated_ += comm;
+
+    if (!cost_.valid())
+    {
+        return;
+    }
+
+    // What the cells' timers did not take; the communication time is
+    // counted in 10 ms ticks, so a step's share can come out negative: it
+    // is carried to the next step instead
+    scalarField& cost = cost_->primitiveFieldRef();
+    const scalar rest = spent - (sum(cost) - costStart_) + carried_;
+    carried_ = min(rest, 0);
+    if (rest <= 0)
+    {
+        return;
+    }
+
+    label total = 0;
+    for (const label n : perCell)
+    {
+        total += n;
+    }
+    if (total > 0)
+    {
+        forAll(cost, celli)
+        {
+            cost[celli] += rest*perCell[celli]/total;
+        }
+    }
+    else if (cost.size())
+    {
+        cost += rest/cost.size();
+    }
+}
+
+
+void Foam::loadBalance::endStep()
+{
+    const Time& runTime = mesh_.time();
+    if (!runTime.writeTime())
+    {
+        return;
+    }
+
+    if (Pstream::parRun())
+    {
+        // Largest and mean over the processors
+        const auto spread = [](const scalar x)
+        {
+            return Pair<scalar>
+            (
+                returnReduce(x, maxOp<scalar>()),
+                returnReduce(x, sumOp<scalar>())/Pstream::nProcs()
+            );
+        };
+        const auto ratio = [](const Pair<scalar>& s)
+        {
+            return s.second() > 0 ? s.first()/s.second() : 1;
+        };
+
+        const Pair<scalar> all(spread(computed_[gas] + computed_[grains]));
+        const Pair<scalar> gasTimes(spread(computed_[gas]));
+        const Pair<scalar> grainTimes(spread(computed_[grains]));
+        const Pair<scalar> commTimes(spread(communicated_));
+        const scalar imbalance = ratio(all);
+
+        Info<< "Load balance since the last write: compute time per"
+            << " processor max/mean = " << imbalance << " (max "
+            << all.first() << " s, mean " << all.second() << " s; gas "
+            << ratio(gasTimes) << ", grains " << ratio(grainTimes)
+            << "); communication and waiting max " << commTimes.first()
+            << " s, mean " << commTimes.second() << " s" << endl;
+
+        stop_ =
+            imbalance > maxImbalance_
+         && runTime.value()
+          < runTime.endTime().value() - 0.5*runTime.deltaTValue();
+        if (stop_)
+        {
+            Info<< "Stopping at t = " << runTime.timeName()
+                << " to re-balance: max/mean " << imbalance
+                << " > maxImbalance " << maxImbalance_ << " ("
+                << runTime.controlDict().name() << "). Continue with"
+                << " reconstructPar -newTimes; decomposePar -latestTime"
+                << " -force (weightField cellCost in"
+                << " system/decomposeParDict); the solver again." << nl
+                << endl;
+        }
+    }
+    computed_ = Zero;
+    communicated_ = 0;
+
+    if (cost_.valid())
+    {
+        scalarField& cost = cost_->primitiveFieldRef();
+        const scalar floor =
+            0.01*returnReduce(sum(cost), sumOp<scalar>())
+           /max(returnReduce(cost.size(), sumOp<label>()), 1);
+        cost = max(cost, max(floor, VSMALL));
+        resetCost_ = true;
+    }
+}
+
+
+// ************************************************************************* //
