@@ -78,22 +78,27 @@ Foam::loadBalance::loadBalance(const fvMesh& mesh)
 {
     if (inputChecks::getBoolOrDefault(settings(mesh), "cellCost", false))
     {
-        cost_.reset
-        (
-            new volScalarField
+        cost_.setSize(names().size());
+        forAll(cost_, i)
+        {
+            cost_.set
             (
-                IOobject
+                i,
+                new volScalarField
                 (
-                    cellTimer::fieldName,
-                    mesh.time().timeName(),
+                    IOobject
+                    (
+                        names()[i],
+                        mesh.time().timeName(),
+                        mesh,
+                        IOobject::NO_READ,
+                        IOobject::AUTO_WRITE
+                    ),
                     mesh,
-                    IOobject::NO_READ,
-                    IOobject::AUTO_WRITE
-                ),
-                mesh,
-                dimensionedScalar(dimTime, Zero)
-            )
-        );
+                    dimensionedScalar(dimTime, Zero)
+                )
+            );
+        }
     }
 
     if (Pstream::parRun())
@@ -105,41 +110,63 @@ Foam::loadBalance::loadBalance(const fvMesh& mesh)
 
 // * * * * * * * * * * * * * * Static Member Functions  * * * * * * * * * * //
 
+const Foam::wordList& Foam::loadBalance::names()
+{
+    static const wordList fields
+    ({
+        "cellCostGas",
+        cellTimer::fieldName,
+        "cellCost"
+    });
+    return fields;
+}
+
+
 void Foam::loadBalance::writeInitial(const fvMesh& mesh)
 {
-    IOobject io
-    (
-        cellTimer::fieldName,
-        mesh.time().timeName(),
-        mesh,
-        IOobject::NO_READ,
-        IOobject::NO_WRITE,
-        false
-    );
-    if
-    (
-        inputChecks::getBoolOrDefault(settings(mesh), "cellCost", false)
-     && !io.typeHeaderOk<volScalarField>(false)
-    )
+    if (!inputChecks::getBoolOrDefault(settings(mesh), "cellCost", false))
     {
-        volScalarField(io, mesh, dimensionedScalar("uniform", dimTime, 1.0)).write();
+        return;
+    }
+
+    for (const word& name : names())
+    {
+        IOobject io
+        (
+            name,
+            mesh.time().timeName(),
+            mesh,
+            IOobject::NO_READ,
+            IOobject::NO_WRITE,
+            false
+        );
+        if (!io.typeHeaderOk<volScalarField>(false))
+        {
+            volScalarField
+            (
+                io, mesh, dimensionedScalar("uniform", dimTime, 1.0)
+            ).write();
+        }
     }
 }
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::loadBalance::begin()
+void Foam::loadBalance::begin(const phase which)
 {
     if (resetCost_)
     {
-        cost_->primitiveFieldRef() = Zero;
+        forAll(cost_, i)
+        {
+            cost_[i].primitiveFieldRef() = Zero;
+        }
         resetCost_ = false;
     }
 
     cpuStart_ = cpuSeconds();
     commStart_ = communication();
-    costStart_ = cost_.valid() ? sum(cost_->primitiveField()) : 0;
+    costStart_ = cost_.size() ? sum(cost_[which].primitiveField()) : 0;
 }
 
 
@@ -150,7 +177,7 @@ void Foam::loadBalance::end(const phase which, const labelUList& perCell)
     computed_[which] += spent;
     communicated_ += comm;
 
-    if (!cost_.valid())
+    if (cost_.empty())
     {
         return;
     }
@@ -158,7 +185,7 @@ void Foam::loadBalance::end(const phase which, const labelUList& perCell)
     // What the cells' timers did not take; the communication time is
     // counted in 10 ms ticks, so a step's share can come out negative: it
     // is carried to the next step instead
-    scalarField& cost = cost_->primitiveFieldRef();
+    scalarField& cost = cost_[which].primitiveFieldRef();
     const scalar rest = spent - (sum(cost) - costStart_) + carried_;
     carried_ = min(rest, 0);
     if (rest <= 0)
@@ -233,21 +260,22 @@ void Foam::loadBalance::endStep()
                 << " > maxImbalance " << maxImbalance_ << " ("
                 << runTime.controlDict().name() << "). Continue with"
                 << " reconstructPar -newTimes; decomposePar -latestTime"
-                << " -force (weightField cellCost in"
-                << " system/decomposeParDict); the solver again." << nl
-                << endl;
+                << " -force (weighted by cellCost, or method"
+                << " phaseBalanced); the solver again." << nl << endl;
         }
     }
     computed_ = Zero;
     communicated_ = 0;
 
-    if (cost_.valid())
+    if (cost_.size())
     {
-        scalarField& cost = cost_->primitiveFieldRef();
+        // The total, raised to 1 % of the mean cell where below
+        scalarField& total = cost_[all].primitiveFieldRef();
+        total = cost_[gas].primitiveField() + cost_[grains].primitiveField();
         const scalar floor =
-            0.01*returnReduce(sum(cost), sumOp<scalar>())
-           /max(returnReduce(cost.size(), sumOp<label>()), 1);
-        cost = max(cost, max(floor, VSMALL));
+            0.01*returnReduce(sum(total), sumOp<scalar>())
+           /max(returnReduce(total.size(), sumOp<label>()), 1);
+        total = max(total, max(floor, VSMALL));
         resetCost_ = true;
     }
 }

@@ -125,7 +125,7 @@ void Foam::rarefiedMultiphaseSystem::evolve()
     // Steps 1-3: gas inflow, move, collisions
     if (gas_.valid())
     {
-        balance_.begin();
+        balance_.begin(loadBalance::gas);
         gas_->evolve();
 
         const auto& occupancy = gas_->cellOccupancy();
@@ -139,7 +139,7 @@ void Foam::rarefiedMultiphaseSystem::evolve()
 
     if (grains_.valid())
     {
-        balance_.begin();
+        balance_.begin(loadBalance::grains);
 
         // Step 4: the gas on the parcels, then the solid step
         grains_->coupleParcels(gas_.get());
