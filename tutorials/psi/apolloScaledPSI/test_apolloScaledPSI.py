@@ -101,6 +101,7 @@ SURFACE = 0.020                     # x of the surface [m]
 HALF_ANGLE = math.radians(1.25)
 STEPS = 240
 STEPS_VIBRATION = 600               # 30 us: the shock layer has formed
+STEPS_REBALANCED = 360              # 18 us, written every 6 us
 PARCELS = 3000
 T_GRAINS = 200.0                    # grains' initial temperature [K]
 
@@ -123,10 +124,11 @@ def entry(case, path, key):
     return values if len(values) > 1 else values[0]
 
 
-def prepare(name, seed=1, steps=STEPS):
+def prepare(name, seed=1, steps=STEPS, writes=2, max_imbalance=None):
     """The reduced case in build/tutorials/apolloScaledPSI/<name>, every
     randomSeed of its files (gas, grain fill, NTC, coupling) set to seed,
-    run for steps."""
+    run for steps with writes evenly spaced writes; re-balanced at writes
+    whose imbalance exceeds max_imbalance (None: never, one segment)."""
     case = os.path.join(BUILD, name)
     if os.path.exists(case):
         shutil.rmtree(case)
@@ -140,7 +142,11 @@ def prepare(name, seed=1, steps=STEPS):
                    stdout=subprocess.DEVNULL)
     dt = float(foam.get_entry(case, "settings/demo", "deltaT"))
     foam.set_entry(case, "settings/demo", "endTime", f"{steps*dt:.6g}")
-    foam.set_entry(case, "settings/demo", "writeInterval", f"{steps*dt/2:.6g}")
+    foam.set_entry(case, "settings/demo", "writeInterval", f"{steps*dt/writes:.6g}")
+    foam.substitute(os.path.join(case, "system/controlDict"),
+                    r"(maxImbalance\s+)[^;]+;",
+                    rf"\g<1>{max_imbalance};" if max_imbalance
+                    else r"// \g<0>")
     # (foamDictionary -set rewrites the file with hybridDust's $MPPICDust
     # expanded: set both)
     for dust in ("MPPICDust", "hybridDust"):
@@ -220,8 +226,9 @@ def last(log, label):
     return foam.log_values(log, label)[-1]
 
 
-def expected_insertions(case):
-    """N dt sum_f n A_f Gamma/W for the nozzle faces (blockMesh geometry)."""
+def expected_insertions(case, steps=STEPS):
+    """N dt sum_f n A_f Gamma/W for the nozzle faces (blockMesh geometry),
+    N = steps."""
     props = "constant/dsmcProperties"
     nozzle = "PatchInflowCoeffs/nozzle/"
     n = entry(case, props, nozzle + "n")        # nExit x densityFactor
@@ -238,7 +245,7 @@ def expected_insertions(case):
     # (blockMesh: equal spacing along the flat face, r measured along y)
     r = np.linspace(0, LIP, faces + 1)
     area = (r[1:]**2 - r[:-1]**2)*math.sin(HALF_ANGLE)*math.cos(HALF_ANGLE)
-    return STEPS*dt*n*gamma*area.sum()/W, faces, q, gamma/U
+    return steps*dt*n*gamma*area.sum()/W, faces, q, gamma/U
 
 
 def test_nozzle_flux(runs):
@@ -393,6 +400,113 @@ def test_summary(runs):
             print(f"\n{'PASS' if ok else 'FAIL'} apolloScaledPSI {name} summary "
                   f"{column}: {row[column]} against {value:.6g} from the files")
             assert ok, (name, column, row[column], value)
+
+
+@pytest.fixture(scope="module")
+def rebalanced():
+    """The reduced case on 2 ranks, written 3 times over STEPS_REBALANCED
+    steps, re-balanced at every write before the last (maxImbalance just
+    above 1: some imbalance is always measured)."""
+    return run(prepare("rebalanced", steps=STEPS_REBALANCED, writes=3,
+                       max_imbalance="1.000001"), parallel=True)
+
+
+def segments(case):
+    """The solver's logs of a re-balanced run, in order."""
+    logs = [solver_log(case)]
+    while os.path.exists(f"{solver_log(case)}.rebalance{len(logs)}"):
+        logs.append(f"{solver_log(case)}.rebalance{len(logs)}")
+    return logs
+
+
+def processor_field(case, proc, time, name):
+    path = os.path.join(case, f"processor{proc}", time)
+    return foam.read_field(os.path.join(path, name),
+                           foam.n_cells(os.path.join(case, f"processor{proc}")))
+
+
+def test_rebalance_accounts(rebalanced):
+    """Re-balancing (module docstring): the run stops at both earlier
+    writes and reaches the end; every segment's accounts balance; the
+    segments' insertions add up to the nozzle's flux (each segment's
+    PatchInflow starts its fractional carry afresh: tolerance the number
+    of faces per segment)."""
+    logs = segments(rebalanced)
+    stopped = []
+    for log in logs:
+        with open(log) as f:
+            stopped.append("to re-balance" in f.read())
+    assert len(logs) == 3 and stopped == [True, True, False], (logs, stopped)
+    end = STEPS_REBALANCED*entry(rebalanced, "system/controlDict", "deltaT")
+    assert abs(float(foam.latest_time(rebalanced)) - end) < 1e-12
+
+    with open(os.path.join(rebalanced, "log.rarefiedMultiphaseInitialise")) as f:
+        present = float(re.search(r"Solid parcels added: (\d+)", f.read()).group(1))
+    inserted = 0.0
+    for log in logs:
+        with open(log) as f:
+            text = f.read()
+        assert "lost away from patches" not in text, log
+        segment_in = last(log, "Simulators inserted through nozzle")[1]
+        assert last(log, "Simulators in / out since start")[0] == segment_in, log
+        out = last(log, "Parcels in / out since start")[1]
+        now = last(log, "Parcels present")[0]
+        assert now == present - out, (log, now, present, out)
+        present, inserted = now, inserted + segment_in
+
+    expected, faces = expected_insertions(rebalanced, STEPS_REBALANCED)[:2]
+    ok = abs(inserted - expected) < faces*len(logs)
+    print(f"\n{'PASS' if ok else 'FAIL'} apolloScaledPSI re-balanced twice: "
+          f"{inserted:.0f} simulators in over {len(logs)} segments, expected "
+          f"{expected:.1f}, tolerance {faces*len(logs)}; parcels balance in each")
+    assert ok
+
+
+def test_rebalance_state(rebalanced):
+    """After a re-decomposition every processor reads the case's uniform/
+    (reconstructPar took it from processor0): the restart state is set
+    aside with a warning, and the two processors' gas streams differ (they
+    would share processor0's stream otherwise)."""
+    with open(segments(rebalanced)[-1]) as f:
+        assert "gasCloud starts afresh" in f.read()
+    t = foam.latest_time(rebalanced)
+    states = [foam.read_dict(os.path.join(
+        rebalanced, f"processor{p}", t, "uniform", "lagrangian", "dsmc",
+        "gasCloudState")) for p in (0, 1)]
+    seeds = [st["seed"] for st in states]
+    generators = [st["generator"] for st in states]
+    assert seeds[0] != seeds[1] and generators[0] != generators[1], (seeds, generators)
+
+
+def test_rebalance_cost(rebalanced):
+    """cellCost: summed over the cells of both processors it is the
+    compute time the log reports for the interval (2 x mean), within
+    -1 % and +2 % (cells under 1 % of the mean cell are raised to it: at
+    most +1 %; the phase time the cells' timers exceeded in the last step,
+    carried to the next, and the log's rounding: well under 1 %; measured
+    +0.5 %); and decomposePar split the last segment's cells by the phases'
+    costs (method phaseBalanced): each processor's sum of the decomposed
+    cellCostGas and of cellCostGrains within 4 % of the mean (the method's
+    imbalance 1.03, and a margin for the integer weights)."""
+    logs = segments(rebalanced)
+    t = foam.latest_time(rebalanced)
+    total = sum(processor_field(rebalanced, p, t, "cellCost").sum() for p in (0, 1))
+    with open(logs[-1]) as f:
+        mean = float(re.findall(r"Load balance since the last write: compute time "
+                                r"per processor max/mean = \S+ \(max \S+ s, mean (\S+) s",
+                                f.read())[-1])
+    start = min((d for d in os.listdir(os.path.join(rebalanced, "processor0"))
+                 if re.fullmatch(r"[0-9.eE+-]+", d)), key=float)
+    splits = {}
+    for name in ("cellCostGas", "cellCostGrains"):
+        shares = [processor_field(rebalanced, p, start, name).sum() for p in (0, 1)]
+        splits[name] = max(shares)/np.mean(shares)
+    ok = 0.99 <= total/(2*mean) <= 1.02 and max(splits.values()) <= 1.04
+    print(f"\n{'PASS' if ok else 'FAIL'} apolloScaledPSI cellCost: {total:.3f} s in the "
+          f"cells against {2*mean:.3f} s logged; decomposition by the phases' costs "
+          f"from t = {start}: processors' shares max/mean "
+          + ", ".join(f"{k} {v:.4f}" for k, v in splits.items()))
+    assert ok
 
 
 def test_vibration():
