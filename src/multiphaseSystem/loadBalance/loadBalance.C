@@ -70,7 +70,7 @@ Foam::loadBalance::loadBalance(const fvMesh& mesh)
     resetCost_(false),
     computed_(Zero),
     communicated_(0),
-    carried_(0),
+    carried_(Zero),
     cpuStart_(0),
     commStart_(0),
     costStart_(0),
@@ -186,8 +186,8 @@ void Foam::loadBalance::end(const phase which, const labelUList& perCell)
     // counted in 10 ms ticks, so a step's share can come out negative: it
     // is carried to the next step instead
     scalarField& cost = cost_[which].primitiveFieldRef();
-    const scalar rest = spent - (sum(cost) - costStart_) + carried_;
-    carried_ = min(rest, 0);
+    const scalar rest = spent - (sum(cost) - costStart_) + carried_[which];
+    carried_[which] = min(rest, 0);
     if (rest <= 0)
     {
         return;
