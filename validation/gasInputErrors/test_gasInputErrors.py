@@ -76,6 +76,15 @@ def test_no_phase(meshed):
     assert "Nothing to solve" in out and "dsmcProperties" in out
 
 
+@pytest.mark.parametrize("app", ["rarefiedMultiphaseInitialise", "rarefiedMultiphaseFoam"])
+def test_unknown_tracking(meshed, app):
+    case = with_entry(meshed, "unknownTracking", GAS, "tracking", "straight")
+    out = run_failing(case, app)
+    for text in ("FOAM FATAL IO ERROR", GAS, "tracking", "straight", "cartesian",
+                 "barycentric"):
+        assert text in out, text
+
+
 # Unknown and misspelt keywords: the message names the file, the keyword,
 # the keyword meant and the valid ones.
 # (name, dictionary, entry, value, apps, texts beyond the file and keyword)

@@ -9,6 +9,8 @@
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
+constexpr unsigned char Foam::gasParcel::noOctant;
+
 namespace Foam
 {
     defineTypeNameAndDebug(gasParcel, 0);
@@ -30,7 +32,8 @@ Foam::gasParcel::trackingData::trackingData(DSMCCloud<gasParcel>& cloud)
         owner_.axisymmetric().active() ? &owner_.axisymmetric() : nullptr
     ),
     randomEntry_(owner_.randomEntryTime()),
-    vibrating_(owner_.vibration().active())
+    vibrating_(owner_.vibration().active()),
+    boxes_(owner_.boxes())
 {}
 
 
@@ -55,6 +58,43 @@ Foam::gasCloud& Foam::gasParcel::trackingData::owner
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::scalar Foam::gasParcel::walk
+(
+    const trackingData& td,
+    const vector& s,
+    const scalar f
+)
+{
+    octant_ = noOctant;
+
+    if (!td.boxes())
+    {
+        return 0;
+    }
+
+    const point x0(td.boxes()->position(*this));
+    label celli = this->cell();
+    const scalar t = td.boxes()->walk(x0, s, celli);
+
+    if (t > 0 && td.boxes()->place(*this, x0 + t*s, celli))
+    {
+        if (t < 1)
+        {
+            this->stepFraction() += t*f;
+        }
+        else
+        {
+            this->stepFraction() = 1;
+            const vector r(x0 + s - this->mesh().cellCentres()[celli]);
+            octant_ = pos0(r.x()) + 2*pos0(r.y()) + 4*pos0(r.z());
+        }
+        return t;
+    }
+
+    return 0;
+}
+
 
 Foam::scalar Foam::gasParcel::trackingData::vibrationalEnergy
 (

@@ -6,6 +6,7 @@
 
 #include "gasParcel.H"
 #include "wallPolyPatch.H"
+#include "meshTools.H"
 
 // * * * * * * * * * * * * * * * * Tracking  * * * * * * * * * * * * * * * * //
 
@@ -44,8 +45,45 @@ bool Foam::gasParcel::move
 
     enter(cloud, td);
 
-    // Upstream's ballistic move (reduced-dimension constraint included)
-    const bool keep = DSMCParcel<particle>::move(cloud, td, trackTime);
+    // Upstream's ballistic move, or the Cartesian move (boxWalk) wherever
+    // the path lies in box cells, handing each crossing of a boundary face
+    // (and each cell that is not a box) to upstream's tracking
+    bool keep = true;
+    if (td.boxes())
+    {
+        td.switchProcessor = false;
+        td.keepParticle = true;
+
+        const polyMesh& mesh = cloud.pMesh();
+
+        // Upstream's path over the rest of the step (reduced-dimension
+        // constraint and drift off the mid-plane included)
+        auto path = [&](const scalar f)
+        {
+            vector Utracking(U_);
+            meshTools::constrainDirection(mesh, mesh.solutionD(), Utracking);
+            return f*trackTime*Utracking - this->deviationFromMeshCentre();
+        };
+
+        while
+        (
+            td.keepParticle && !td.switchProcessor
+         && this->stepFraction() < 1
+        )
+        {
+            const scalar f = 1 - this->stepFraction();
+            if (walk(td, path(f), f) < 1)
+            {
+                const scalar rest = 1 - this->stepFraction();
+                this->trackToAndHitFace(path(rest), rest, cloud, td);
+            }
+        }
+        keep = td.keepParticle;
+    }
+    else
+    {
+        keep = DSMCParcel<particle>::move(cloud, td, trackTime);
+    }
 
     if (!keep)
     {
@@ -106,7 +144,17 @@ bool Foam::gasParcel::moveAxisymmetric
             chord = axisymmetricMode::offWall(*this, chord);
         }
 
-        this->trackToFace(chord, f);
+        // The Cartesian move where the chord lies in the plane (it does
+        // not for a simulator just placed off it), else upstream's
+        if
+        (
+            !td.boxes()
+         || mag(chord.z()) > 1e-9*mag(chord)
+         || walk(td, chord, f) == 0
+        )
+        {
+            this->trackToFace(chord, f);
+        }
         stalled = this->stepFraction() == 1 - f && this->onBoundaryFace();
 
         const scalar done = (this->stepFraction() - (1 - f))/f;

@@ -1,0 +1,367 @@
+/*---------------------------------------------------------------------------*\
+  rarefiedMultiphaseFoam
+  Copyright (C) 2026 The rarefiedMultiphaseFoam authors
+  SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
+\*---------------------------------------------------------------------------*/
+
+#include "boxWalk.H"
+#include "boundBox.H"
+#include "tetIndices.H"
+#include "tensor.H"
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+bool Foam::boxWalk::findSides(const label celli)
+{
+    const cell& faceIs = mesh_.cells()[celli];
+    if (faceIs.size() != 6)
+    {
+        return false;
+    }
+
+    const pointField& points = mesh_.points();
+    const boundBox box(points, mesh_.cellPoints()[celli], false);
+    const scalar tol = 1e-9*box.mag();
+
+    FixedList<label, 6>& sides = sides_[celli];
+    FixedList<scalar, 6>& planes = planes_[celli];
+
+    for (const label facei : faceIs)
+    {
+        const face& f = mesh_.faces()[facei];
+        if (f.size() != 4 || mesh_.tetBasePtIs()[facei] < 0)
+        {
+            return false;
+        }
+
+        for (label a = 0; a < nAxes_; ++a)
+        {
+            for (label end = 0; end < 2; ++end)
+            {
+                const scalar plane = end ? box.max()[a] : box.min()[a];
+                bool onPlane = true;
+                for (const label pointi : f)
+                {
+                    onPlane = onPlane && mag(points[pointi][a] - plane) <= tol;
+                }
+                if (onPlane)
+                {
+                    // Two faces on one side: not a box
+                    if (sides[2*a + end] >= 0)
+                    {
+                        return false;
+                    }
+                    sides[2*a + end] = facei;
+                    planes[2*a + end] = plane;
+                }
+            }
+        }
+    }
+
+    for (label side = 0; side < 2*nAxes_; ++side)
+    {
+        if (sides[side] < 0)
+        {
+            return false;
+        }
+    }
+
+    if (corners_.empty())
+    {
+        return true;
+    }
+
+    // The corners of every tet's triangle (a box's face points are all
+    // corners)
+    for (label side = 0; side < 6; ++side)
+    {
+        for (label tetPti = 1; tetPti < 3; ++tetPti)
+        {
+            const triFace tri
+            (
+                tetIndices(celli, sides[side], tetPti).faceTriIs(mesh_)
+            );
+            forAll(tri, i)
+            {
+                const point& pt = points[tri[i]];
+                label k = 0;
+                for (label a = 0; a < 3; ++a)
+                {
+                    if (mag(pt[a] - planes[2*a + 1]) <= tol)
+                    {
+                        k |= 1 << a;
+                    }
+                    else if (mag(pt[a] - planes[2*a]) > tol)
+                    {
+                        return false;
+                    }
+                }
+                corners_[celli][3*(2*side + tetPti - 1) + i] = k;
+            }
+        }
+    }
+
+    return true;
+}
+
+
+inline void Foam::boxWalk::triangle
+(
+    const label celli,
+    const label side,
+    const label tetPti,
+    point& base,
+    point& vertex1,
+    point& vertex2
+) const
+{
+    const label facei = sides_[celli][side];
+
+    if (corners_.empty())
+    {
+        const pointField& points = mesh_.points();
+        const triFace tri(tetIndices(celli, facei, tetPti).faceTriIs(mesh_));
+        base = points[tri[0]];
+        vertex1 = points[tri[1]];
+        vertex2 = points[tri[2]];
+    }
+    else
+    {
+        const label first = 3*(2*side + tetPti - 1);
+        const FixedList<unsigned char, 36>& k = corners_[celli];
+        base = corner(celli, k[first]);
+        vertex1 = corner(celli, k[first + 1]);
+        vertex2 = corner(celli, k[first + 2]);
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::boxWalk::boxWalk(const polyMesh& mesh, const bool inPlane)
+:
+    mesh_(mesh),
+    nAxes_(inPlane ? 2 : 3),
+    sides_(mesh.nCells()),
+    planes_(mesh.nCells()),
+    corners_(inPlane ? 0 : mesh.nCells()),
+    nWalkable_(0)
+{
+    forAll(sides_, celli)
+    {
+        sides_[celli] = -1;
+        planes_[celli] = scalar(0);
+        if (findSides(celli))
+        {
+            ++nWalkable_;
+        }
+        else
+        {
+            sides_[celli] = -1;
+        }
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::scalar Foam::boxWalk::walk
+(
+    const point& x0,
+    const vector& s,
+    label& celli
+) const
+{
+    if (!walkable(celli))
+    {
+        return 0;
+    }
+
+    const labelUList& owner = mesh_.faceOwner();
+    const labelUList& neighbour = mesh_.faceNeighbour();
+
+    // Each cell entered is left at a larger t, so no cell is met twice
+    label c = celli;
+    scalar tIn = 0;
+    for (label n = 0; n < mesh_.nCells(); ++n)
+    {
+        const FixedList<scalar, 6>& planes = planes_[c];
+
+        // The nearest side ahead
+        scalar tOut = GREAT;
+        label side = -1;
+        for (label a = 0; a < nAxes_; ++a)
+        {
+            if (s[a] != 0)
+            {
+                const label ahead = 2*a + (s[a] > 0);
+                const scalar t = (planes[ahead] - x0[a])/s[a];
+                if (t < tOut)
+                {
+                    tOut = t;
+                    side = ahead;
+                }
+            }
+        }
+
+        if (tOut >= 1)
+        {
+            celli = c;
+            return 1;
+        }
+        tOut = max(tOut, tIn);
+
+        const label facei = sides_[c][side];
+        label next = -1;
+        if (mesh_.isInternalFace(facei))
+        {
+            next = owner[facei] == c ? neighbour[facei] : owner[facei];
+        }
+
+        if (next < 0 || !walkable(next))
+        {
+            if (c == celli)
+            {
+                return 0;
+            }
+            celli = c;
+            return 0.5*(tIn + tOut);
+        }
+
+        c = next;
+        tIn = tOut;
+    }
+
+    return 0;
+}
+
+
+Foam::point Foam::boxWalk::position(const particle& p) const
+{
+    const label celli = p.cell();
+    if (!walkable(celli))
+    {
+        return p.position();
+    }
+
+    const FixedList<label, 6>& sides = sides_[celli];
+    label side = 0;
+    while (side < 2*nAxes_ && sides[side] != p.tetFace())
+    {
+        ++side;
+    }
+    if (side == 2*nAxes_)
+    {
+        // In a tet of a side not walked (a wedge face)
+        return p.position();
+    }
+
+    point base, vertex1, vertex2;
+    triangle(celli, side, p.tetPt(), base, vertex1, vertex2);
+    const barycentric& y = p.coordinates();
+
+    return
+        y.a()*mesh_.cellCentres()[celli] + y.b()*base + y.c()*vertex1
+      + y.d()*vertex2;
+}
+
+
+bool Foam::boxWalk::place
+(
+    particle& p,
+    const point& x,
+    const label celli
+) const
+{
+    const point& centre = mesh_.cellCentres()[celli];
+    const vector d(x - centre);
+    const FixedList<scalar, 6>& planes = planes_[celli];
+
+    // The side the ray from the centre through x leaves by: its tets
+    // (centre, face triangle) hold x
+    scalar reach = GREAT;
+    label side = -1;
+    for (label a = 0; a < nAxes_; ++a)
+    {
+        if (d[a] != 0)
+        {
+            const label ahead = 2*a + (d[a] > 0);
+            const scalar r = (planes[ahead] - centre[a])/d[a];
+            if (r < reach)
+            {
+                reach = r;
+                side = ahead;
+            }
+        }
+    }
+    if (side < 0)
+    {
+        // x at the centre (to the last bit): any tet holds it
+        side = 0;
+    }
+
+    // Barycentric coordinates to round-off: a point on a tet's face may
+    // come out a few ulps outside it
+    const scalar tol = 1e-9;
+
+    for (label tetPti = 1; tetPti < 3; ++tetPti)
+    {
+        point base, vertex1, vertex2;
+        triangle(celli, side, tetPti, base, vertex1, vertex2);
+
+        // x - centre = y1 (base - centre) + y2 (v1 - centre) + y3 (v2 - centre)
+        vector y;
+        if (corners_.empty())
+        {
+            const tensor edges
+            (
+                base - centre, vertex1 - centre, vertex2 - centre
+            );
+            y = d & inv(edges);
+        }
+        else
+        {
+            // In a box the triangle lies in the side's plane, which x is
+            // the fraction 1/reach of the way to from the centre: the
+            // triangle's weights of the point q where the ray meets the
+            // plane, in the plane's two axes u, w, times that fraction
+            const label u = (side/2 + 1) % 3;
+            const label w = (side/2 + 2) % 3;
+            const point q(centre + reach*d);
+            const scalar e1u = vertex1[u] - base[u], e1w = vertex1[w] - base[w];
+            const scalar e2u = vertex2[u] - base[u], e2w = vertex2[w] - base[w];
+            const scalar qu = q[u] - base[u], qw = q[w] - base[w];
+            const scalar fraction = 1/reach/(e1u*e2w - e2u*e1w);
+            const scalar y2 = fraction*(qu*e2w - e2u*qw);
+            const scalar y3 = fraction*(e1u*qw - qu*e1w);
+            y = vector(1/reach - y2 - y3, y2, y3);
+        }
+        const scalar y0 = 1 - y.x() - y.y() - y.z();
+
+        if (min(y0, cmptMin(y)) >= -tol)
+        {
+            barycentric b(y0, y.x(), y.y(), y.z());
+            for (direction i = 0; i < 4; ++i)
+            {
+                b[i] = max(b[i], scalar(0));
+            }
+            b /= b.a() + b.b() + b.c() + b.d();
+
+            p.cell() = celli;
+            p.tetFace() = sides_[celli][side];
+            p.tetPt() = tetPti;
+            p.face() = -1;
+
+            // particle offers its coordinates read-only, having no setter
+            // other than a tracking search (relocate) from the cell centre;
+            // the particle itself is not const
+            const_cast<barycentric&>(p.coordinates()) = b;
+            return true;
+        }
+    }
+
+    return false;
+}
+
+
+// ************************************************************************* //
