@@ -215,6 +215,17 @@ def test_keyword_without_axisymmetric(meshed):
         assert text in out, text
 
 
+def test_no_cartesian_move(meshed):
+    """The Cartesian move (doc/physics.md 2.6) is refused in the axisymmetric
+    mode, whose wedge cells are not boxes."""
+    case = foam.copy_case(meshed, os.path.join(BUILD, "cartesianTracking"))
+    foam.set_entry(case, "constant/dsmcProperties", "tracking", "cartesian")
+    out = run_failing(case, "rarefiedMultiphaseFoam")
+    for text in ("FOAM FATAL IO ERROR", "constant/dsmcProperties", "tracking",
+                 "cartesian", "valid: one of barycentric"):
+        assert text in out, text
+
+
 def test_not_a_wedge():
     """axisymmetric on the planar impingingStream mesh (no wedge patch)."""
     tutorial = os.path.join(foam.PROJECT_DIR, "tutorials", "gas", "impingingStream")

@@ -7,7 +7,6 @@
 #include "boxWalk.H"
 #include "boundBox.H"
 #include "tetIndices.H"
-#include "tensor.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -34,7 +33,7 @@ bool Foam::boxWalk::findSides(const label celli)
             return false;
         }
 
-        for (label a = 0; a < nAxes_; ++a)
+        for (label a = 0; a < 3; ++a)
         {
             for (label end = 0; end < 2; ++end)
             {
@@ -58,17 +57,12 @@ bool Foam::boxWalk::findSides(const label celli)
         }
     }
 
-    for (label side = 0; side < 2*nAxes_; ++side)
+    for (label side = 0; side < 6; ++side)
     {
         if (sides[side] < 0)
         {
             return false;
         }
-    }
-
-    if (corners_.empty())
-    {
-        return true;
     }
 
     // The corners of every tet's triangle (a box's face points are all
@@ -115,36 +109,22 @@ inline void Foam::boxWalk::triangle
     point& vertex2
 ) const
 {
-    const label facei = sides_[celli][side];
-
-    if (corners_.empty())
-    {
-        const pointField& points = mesh_.points();
-        const triFace tri(tetIndices(celli, facei, tetPti).faceTriIs(mesh_));
-        base = points[tri[0]];
-        vertex1 = points[tri[1]];
-        vertex2 = points[tri[2]];
-    }
-    else
-    {
-        const label first = 3*(2*side + tetPti - 1);
-        const FixedList<unsigned char, 36>& k = corners_[celli];
-        base = corner(celli, k[first]);
-        vertex1 = corner(celli, k[first + 1]);
-        vertex2 = corner(celli, k[first + 2]);
-    }
+    const label first = 3*(2*side + tetPti - 1);
+    const FixedList<unsigned char, 36>& k = corners_[celli];
+    base = corner(celli, k[first]);
+    vertex1 = corner(celli, k[first + 1]);
+    vertex2 = corner(celli, k[first + 2]);
 }
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::boxWalk::boxWalk(const polyMesh& mesh, const bool inPlane)
+Foam::boxWalk::boxWalk(const polyMesh& mesh)
 :
     mesh_(mesh),
-    nAxes_(inPlane ? 2 : 3),
     sides_(mesh.nCells()),
     planes_(mesh.nCells()),
-    corners_(inPlane ? 0 : mesh.nCells()),
+    corners_(mesh.nCells()),
     nWalkable_(0)
 {
     forAll(sides_, celli)
@@ -190,7 +170,7 @@ Foam::scalar Foam::boxWalk::walk
         // The nearest side ahead
         scalar tOut = GREAT;
         label side = -1;
-        for (label a = 0; a < nAxes_; ++a)
+        for (label a = 0; a < 3; ++a)
         {
             if (s[a] != 0)
             {
@@ -246,13 +226,12 @@ Foam::point Foam::boxWalk::position(const particle& p) const
 
     const FixedList<label, 6>& sides = sides_[celli];
     label side = 0;
-    while (side < 2*nAxes_ && sides[side] != p.tetFace())
+    while (side < 6 && sides[side] != p.tetFace())
     {
         ++side;
     }
-    if (side == 2*nAxes_)
+    if (side == 6)
     {
-        // In a tet of a side not walked (a wedge face)
         return p.position();
     }
 
@@ -281,7 +260,7 @@ bool Foam::boxWalk::place
     // (centre, face triangle) hold x
     scalar reach = GREAT;
     label side = -1;
-    for (label a = 0; a < nAxes_; ++a)
+    for (label a = 0; a < 3; ++a)
     {
         if (d[a] != 0)
         {
@@ -310,32 +289,20 @@ bool Foam::boxWalk::place
         triangle(celli, side, tetPti, base, vertex1, vertex2);
 
         // x - centre = y1 (base - centre) + y2 (v1 - centre) + y3 (v2 - centre)
-        vector y;
-        if (corners_.empty())
-        {
-            const tensor edges
-            (
-                base - centre, vertex1 - centre, vertex2 - centre
-            );
-            y = d & inv(edges);
-        }
-        else
-        {
-            // In a box the triangle lies in the side's plane, which x is
-            // the fraction 1/reach of the way to from the centre: the
-            // triangle's weights of the point q where the ray meets the
-            // plane, in the plane's two axes u, w, times that fraction
-            const label u = (side/2 + 1) % 3;
-            const label w = (side/2 + 2) % 3;
-            const point q(centre + reach*d);
-            const scalar e1u = vertex1[u] - base[u], e1w = vertex1[w] - base[w];
-            const scalar e2u = vertex2[u] - base[u], e2w = vertex2[w] - base[w];
-            const scalar qu = q[u] - base[u], qw = q[w] - base[w];
-            const scalar fraction = 1/reach/(e1u*e2w - e2u*e1w);
-            const scalar y2 = fraction*(qu*e2w - e2u*qw);
-            const scalar y3 = fraction*(e1u*qw - qu*e1w);
-            y = vector(1/reach - y2 - y3, y2, y3);
-        }
+        // The triangle lies in the side's plane, which x is the fraction
+        // 1/reach of the way to from the centre: the triangle's weights of
+        // the point q where the ray meets the plane, in the plane's two
+        // axes u, w, times that fraction
+        const label u = (side/2 + 1) % 3;
+        const label w = (side/2 + 2) % 3;
+        const point q(centre + reach*d);
+        const scalar e1u = vertex1[u] - base[u], e1w = vertex1[w] - base[w];
+        const scalar e2u = vertex2[u] - base[u], e2w = vertex2[w] - base[w];
+        const scalar qu = q[u] - base[u], qw = q[w] - base[w];
+        const scalar fraction = 1/reach/(e1u*e2w - e2u*e1w);
+        const scalar y2 = fraction*(qu*e2w - e2u*qw);
+        const scalar y3 = fraction*(e1u*qw - qu*e1w);
+        const vector y(1/reach - y2 - y3, y2, y3);
         const scalar y0 = 1 - y.x() - y.y() - y.z();
 
         if (min(y0, cmptMin(y)) >= -tol)

@@ -92,10 +92,21 @@ Foam::wordList Foam::gasCloudInputCheck::checkProperties
     getPositive(dict, "nEquivalentParticles");
     getLabelOrDefault(dict, "randomSeed", 0, 0, 2000);
     getBoolOrDefault(dict, "randomEntryTime", false);
-    getChoiceOrDefault
-    (
-        dict, "tracking", "cartesian", {"cartesian", "barycentric"}
-    );
+    // The axisymmetric mode's move is upstream's tracking of a chord
+    if (getBoolOrDefault(dict, "axisymmetric", false))
+    {
+        getChoiceOrDefault
+        (
+            dict, "tracking", "barycentric", {"barycentric"}
+        );
+    }
+    else
+    {
+        getChoiceOrDefault
+        (
+            dict, "tracking", "cartesian", {"cartesian", "barycentric"}
+        );
+    }
 
     const wordList species(dict.get<wordList>("typeIdList"));
     if (species.empty())
@@ -869,11 +880,12 @@ Foam::gasCloud::gasCloud(const word& cloudName, const fvMesh& mesh)
 {
     if
     (
-        particleProperties().getOrDefault<word>("tracking", "cartesian")
+        !axisymmetric_.active()
+     && particleProperties().getOrDefault<word>("tracking", "cartesian")
      == "cartesian"
     )
     {
-        boxes_.reset(new boxWalk(mesh, axisymmetric_.active()));
+        boxes_.reset(new boxWalk(mesh));
         Info<< "Gas tracking: Cartesian through "
             << returnReduce(boxes_->nWalkable(), sumOp<label>())
             << " of " << returnReduce(mesh.nCells(), sumOp<label>())

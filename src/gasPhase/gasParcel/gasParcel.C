@@ -66,8 +66,6 @@ Foam::scalar Foam::gasParcel::walk
     const scalar f
 )
 {
-    octant_ = noOctant;
-
     if (!td.boxes())
     {
         return 0;

@@ -38,6 +38,9 @@ bool Foam::gasParcel::move
     const scalar trackTime
 )
 {
+    // Known again only where the Cartesian move ends the step
+    octant_ = noOctant;
+
     if (td.axisymmetric())
     {
         return moveAxisymmetric(cloud, td, trackTime);
@@ -144,17 +147,7 @@ bool Foam::gasParcel::moveAxisymmetric
             chord = axisymmetricMode::offWall(*this, chord);
         }
 
-        // The Cartesian move where the chord lies in the plane (it does
-        // not for a simulator just placed off it), else upstream's
-        if
-        (
-            !td.boxes()
-         || mag(chord.z()) > 1e-9*mag(chord)
-         || walk(td, chord, f) == 0
-        )
-        {
-            this->trackToFace(chord, f);
-        }
+        this->trackToFace(chord, f);
         stalled = this->stepFraction() == 1 - f && this->onBoundaryFace();
 
         const scalar done = (this->stepFraction() - (1 - f))/f;
