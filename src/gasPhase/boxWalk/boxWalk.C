@@ -99,6 +99,33 @@ bool Foam::boxWalk::findSides(const label celli)
 }
 
 
+inline Foam::label Foam::boxWalk::sideAhead
+(
+    const FixedList<scalar, 6>& planes,
+    const point& origin,
+    const vector& direction,
+    scalar& t
+)
+{
+    t = GREAT;
+    label side = -1;
+    for (label a = 0; a < 3; ++a)
+    {
+        if (direction[a] != 0)
+        {
+            const label ahead = 2*a + (direction[a] > 0);
+            const scalar ta = (planes[ahead] - origin[a])/direction[a];
+            if (ta < t)
+            {
+                t = ta;
+                side = ahead;
+            }
+        }
+    }
+    return side;
+}
+
+
 inline void Foam::boxWalk::triangle
 (
     const label celli,
@@ -130,7 +157,6 @@ Foam::boxWalk::boxWalk(const polyMesh& mesh)
     forAll(sides_, celli)
     {
         sides_[celli] = -1;
-        planes_[celli] = scalar(0);
         if (findSides(celli))
         {
             ++nWalkable_;
@@ -165,24 +191,8 @@ Foam::scalar Foam::boxWalk::walk
     scalar tIn = 0;
     for (label n = 0; n < mesh_.nCells(); ++n)
     {
-        const FixedList<scalar, 6>& planes = planes_[c];
-
-        // The nearest side ahead
-        scalar tOut = GREAT;
-        label side = -1;
-        for (label a = 0; a < 3; ++a)
-        {
-            if (s[a] != 0)
-            {
-                const label ahead = 2*a + (s[a] > 0);
-                const scalar t = (planes[ahead] - x0[a])/s[a];
-                if (t < tOut)
-                {
-                    tOut = t;
-                    side = ahead;
-                }
-            }
-        }
+        scalar tOut;
+        const label side = sideAhead(planes_[c], x0, s, tOut);
 
         if (tOut >= 1)
         {
@@ -254,25 +264,10 @@ bool Foam::boxWalk::place
 {
     const point& centre = mesh_.cellCentres()[celli];
     const vector d(x - centre);
-    const FixedList<scalar, 6>& planes = planes_[celli];
-
     // The side the ray from the centre through x leaves by: its tets
     // (centre, face triangle) hold x
-    scalar reach = GREAT;
-    label side = -1;
-    for (label a = 0; a < 3; ++a)
-    {
-        if (d[a] != 0)
-        {
-            const label ahead = 2*a + (d[a] > 0);
-            const scalar r = (planes[ahead] - centre[a])/d[a];
-            if (r < reach)
-            {
-                reach = r;
-                side = ahead;
-            }
-        }
-    }
+    scalar reach;
+    label side = sideAhead(planes_[celli], centre, d, reach);
     if (side < 0)
     {
         // x at the centre (to the last bit): any tet holds it

@@ -93,20 +93,14 @@ Foam::wordList Foam::gasCloudInputCheck::checkProperties
     getLabelOrDefault(dict, "randomSeed", 0, 0, 2000);
     getBoolOrDefault(dict, "randomEntryTime", false);
     // The axisymmetric mode's move is upstream's tracking of a chord
-    if (getBoolOrDefault(dict, "axisymmetric", false))
-    {
-        getChoiceOrDefault
-        (
-            dict, "tracking", "barycentric", {"barycentric"}
-        );
-    }
-    else
-    {
-        getChoiceOrDefault
-        (
-            dict, "tracking", "cartesian", {"cartesian", "barycentric"}
-        );
-    }
+    const bool axisymmetric = getBoolOrDefault(dict, "axisymmetric", false);
+    getChoiceOrDefault
+    (
+        dict, "tracking", axisymmetric ? "barycentric" : "cartesian",
+        axisymmetric
+      ? wordList({"barycentric"})
+      : wordList({"cartesian", "barycentric"})
+    );
 
     const wordList species(dict.get<wordList>("typeIdList"));
     if (species.empty())

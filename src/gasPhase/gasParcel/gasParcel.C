@@ -66,11 +66,6 @@ Foam::scalar Foam::gasParcel::walk
     const scalar f
 )
 {
-    if (!td.boxes())
-    {
-        return 0;
-    }
-
     const point x0(td.boxes()->position(*this));
     label celli = this->cell();
     const scalar t = td.boxes()->walk(x0, s, celli);
