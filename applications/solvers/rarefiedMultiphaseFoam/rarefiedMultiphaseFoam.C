@@ -21,6 +21,7 @@ Description
     is set aside at the restart (writeGuard; doc/physics.md 1.4).  A
     parallel run logs its load balance at every write, and may write the
     cost per cell and stop to re-balance (loadBalance; doc/physics.md 1.5).
+    Memory the solver frees stays with it for the next step (heapReuse).
 
 \*---------------------------------------------------------------------------*/
 
@@ -29,11 +30,15 @@ Description
 #include "progressReport.H"
 #include "writeGuard.H"
 #include "inputChecks.H"
+#include "heapReuse.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
 int main(int argc, char *argv[])
 {
+    // Each step's mesh-sized fields reuse the last step's memory
+    heapReuse();
+
     argList::addNote
     (
         "Transient solver for rarefied gas (DSMC) and solid grain flows"

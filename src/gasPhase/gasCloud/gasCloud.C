@@ -12,6 +12,7 @@
 #include "keywordChecks.H"
 #include "randomStreams.H"
 #include "restartState.H"
+#include "sortByCell.H"
 #include "polyMeshTetDecomposition.H"
 #include "BinaryCollisionModel.H"
 #include "WallInteractionModel.H"
@@ -608,7 +609,7 @@ void Foam::gasCloud::evolveCartesian()
     // every step)
     if (mesh().time().timeIndex() % sortInterval_ == 0)
     {
-        sortByCell();
+        Foam::sortByCell(*this);
     }
 
     // Upstream's resetFields: the sampled fields' patch values sum this
@@ -649,37 +650,6 @@ void Foam::gasCloud::evolveCartesian()
     collide();
 
     sampleWeighted();
-}
-
-
-void Foam::gasCloud::sortByCell()
-{
-    // A counting sort: where each cell's simulators start
-    labelList next(mesh().nCells() + 1, Zero);
-    for (const gasParcel& p : *this)
-    {
-        ++next[p.cell() + 1];
-    }
-    for (label celli = 0; celli < mesh().nCells(); ++celli)
-    {
-        next[celli + 1] += next[celli];
-    }
-
-    List<gasParcel*> sorted(this->size());
-    for (gasParcel& p : *this)
-    {
-        sorted[next[p.cell()]++] = &p;
-    }
-
-    // All copies first (appended, in order), then the originals freed
-    for (const gasParcel* p : sorted)
-    {
-        this->addParticle(new gasParcel(*p));
-    }
-    for (gasParcel* p : sorted)
-    {
-        this->deleteParticle(*p);
-    }
 }
 
 

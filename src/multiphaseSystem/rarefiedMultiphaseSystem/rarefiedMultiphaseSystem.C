@@ -142,6 +142,7 @@ void Foam::rarefiedMultiphaseSystem::evolve()
         balance_.begin(loadBalance::grains);
 
         // Step 4: the gas on the parcels, then the solid step
+        grains_->sortByCell();
         grains_->coupleParcels(gas_.get());
         if (gas_.valid())
         {

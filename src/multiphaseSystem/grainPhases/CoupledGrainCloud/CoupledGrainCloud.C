@@ -6,6 +6,7 @@
 
 #include "CoupledGrainCloud.H"
 #include "gasCarrierFields.H"
+#include "sortByCell.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -58,6 +59,16 @@ void Foam::CoupledGrainCloud<CloudType>::coupleParcels(gasCloud* gas)
     if (coupling_.valid())
     {
         coupling_->coupleParcels(gas);
+    }
+}
+
+
+template<class CloudType>
+void Foam::CoupledGrainCloud<CloudType>::sortByCell()
+{
+    if ((cloud_.mesh().time().timeIndex() - 1) % sortInterval == 0)
+    {
+        Foam::sortByCell(cloud_);
     }
 }
 

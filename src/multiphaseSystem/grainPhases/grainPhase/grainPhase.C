@@ -12,6 +12,7 @@ namespace Foam
 {
     defineTypeNameAndDebug(grainPhase, 0);
     defineRunTimeSelectionTable(grainPhase, dictionary);
+    constexpr label grainPhase::sortInterval;
 }
 
 
