@@ -69,10 +69,15 @@ def make_case(e):
 
 
 def parcels(case, time):
+    """Positions and velocities at time, in the order of the parcels'
+    identities (origId; one processor): the cloud re-orders its parcels
+    by cell (doc/physics.md 1.6), so a parcel's place in the list changes
+    from one write to the next."""
     path = os.path.join(case, time, "lagrangian", "grains")
     x = foam.read_positions(os.path.join(path, "positions"))
     U = foam.read_list(os.path.join(path, "U"))
-    return x, U
+    order = np.argsort(foam.read_list(os.path.join(path, "origId")), kind="stable")
+    return x[order], U[order]
 
 
 def check_common(case, name):
