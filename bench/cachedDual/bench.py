@@ -37,23 +37,10 @@ import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
                                 "..", "..", "src", "python"))
-from rmf import foam  # noqa: E402
+from rmf import foam, psi  # noqa: E402
 
-TUTORIAL = os.path.join(foam.PROJECT_DIR, "tutorials", "psi", "apolloScaledPSI")
 BUILD = os.path.join(foam.PROJECT_DIR, "build", "bench", "cachedDual")
 METHODS = ("dual", "cachedDual")
-
-
-def prepare(settings, steps):
-    case = foam.copy_case(TUTORIAL, os.path.join(BUILD, f"{settings}-init"))
-    with open(os.path.join(case, "constant", "caseSettings"), "w") as f:
-        f.write(f"settings {settings};\nvariant MPPIC;\n")
-    end = steps*float(foam.get_entry(case, f"settings/{settings}", "deltaT"))
-    foam.set_entry(case, f"settings/{settings}", "endTime", f"{end:.6g}")
-    foam.set_entry(case, f"settings/{settings}", "writeInterval", f"{end:.6g}")
-    foam.run(case, "blockMesh")
-    foam.run(case, "rarefiedMultiphaseInitialise")
-    return case
 
 
 def step_cost(init, settings, method, rep):
@@ -75,7 +62,9 @@ def main():
     if args.steps < 2:
         parser.error("--steps must be at least 2")
 
-    init = prepare(args.settings, args.steps)
+    # The last step written: the two methods' results are compared
+    init = psi.prepare_steps(os.path.join(BUILD, f"{args.settings}-init"), args.settings,
+                             "MPPIC", args.steps, write_steps=args.steps)
     costs = {m: [] for m in METHODS}
     for rep in range(args.repeat):
         cases = {}

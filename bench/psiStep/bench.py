@@ -42,26 +42,12 @@ import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
                                 "..", "..", "src", "python"))
-from rmf import foam  # noqa: E402
+from rmf import foam, psi  # noqa: E402
 
-TUTORIAL = os.path.join(foam.PROJECT_DIR, "tutorials", "psi", "apolloScaledPSI")
 BUILD = os.path.join(foam.PROJECT_DIR, "build", "bench", "psiStep")
 SKIP = 2            # steps left out at the start
 TARGET_RATIO = 0.5  # this/previous
 TARGET_FULL = 7.0   # s per serial step, full MPPIC settings
-
-
-def prepare(settings, variant, steps):
-    case = foam.copy_case(TUTORIAL, os.path.join(BUILD, f"{settings}-{variant}-init"))
-    with open(os.path.join(case, "constant", "caseSettings"), "w") as f:
-        f.write(f"settings {settings};\nvariant {variant};\n")
-    dt = float(foam.get_entry(case, f"settings/{settings}", "deltaT"))
-    foam.set_entry(case, f"settings/{settings}", "endTime", f"{steps*dt:.6g}")
-    # No write time within the run
-    foam.set_entry(case, f"settings/{settings}", "writeInterval", f"{10*steps*dt:.6g}")
-    foam.run(case, "blockMesh")
-    foam.run(case, "rarefiedMultiphaseInitialise")
-    return case
 
 
 def step_cost(init, name, solver):
@@ -101,7 +87,8 @@ def main():
     if args.previous:
         solvers = {"previous": previous_solver(args.previous), **solvers}
 
-    init = prepare(args.settings, args.variant, args.steps)
+    init = psi.prepare_steps(os.path.join(BUILD, f"{args.settings}-{args.variant}-init"),
+                             args.settings, args.variant, args.steps)   # nothing written
     costs = {name: [] for name in solvers}
     for rep in range(args.repeat):
         for name, solver in solvers.items():

@@ -6,8 +6,9 @@
 
 Modules: observables (the case's input, each observable, analyse and the
 reading of its result; the definitions in its docstring), plots (the
-PNGs), report (summary.md and the comparison of cases), __main__ (the
-command line).  Their public names are re-exported here: psi.<name>.
+PNGs), report (summary.md and the comparison of cases), case (a case
+prepared for a few steps, for the benchmarks), __main__ (the command
+line).  Their public names are re-exported here: psi.<name>.
 """
 
 from .observables import (CLOUD, SETTINGS, SURFACE_QUANTILE, SURFACE_FRACTION,
@@ -23,10 +24,11 @@ from .observables import (CLOUD, SETTINGS, SURFACE_QUANTILE, SURFACE_FRACTION,
                           value, series, last, nearest_row)
 from .plots import (pick_times, plot_crater, plot_histogram, plot_knp, TIMESERIES,
                     plot_timeseries, plot_case)
+from .case import TUTORIAL, prepare_steps
 from .report import (COLUMNS, table, key_numbers, definitions, write_summary, run_case,
                      common_times, compare)
 
-__all__ = ["CLOUD", "SETTINGS", "SURFACE_QUANTILE", "SURFACE_FRACTION", "MIN_PARCELS",
+__all__ = ["TUTORIAL", "prepare_steps", "CLOUD", "SETTINGS", "SURFACE_QUANTILE", "SURFACE_FRACTION", "MIN_PARCELS",
            "SLAB_PARCELS", "SIGNIFICANCE", "SHOCK_RISE", "AXIS_FRACTION", "AXIS_BAND",
            "SMOOTH_CELLS", "SHOCK_SUSTAIN", "JET_QUANTILE", "PEAK_REGION", "SHELL",
            "STAGNATION_HEIGHT", "HISTOGRAM_TIMES", "MAX_POLYGONS", "DENSITIES",
