@@ -74,6 +74,7 @@ CLOUD_CASES = [
     ("packingRestitution", "subModels/twoSidedCoeffs/e", "1.5", "[0, 1]"),
     ("packingRelief", "subModels/twoSidedCoeffs/relief", "2", "[0, 1]"),
     ("packingAlphaMin", "subModels/twoSidedCoeffs/alphaMin", "0", "(0, 1)"),
+    ("tracking", "tracking", "straight", "cartesian"),
 ]
 
 

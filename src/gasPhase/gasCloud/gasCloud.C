@@ -94,14 +94,7 @@ Foam::wordList Foam::gasCloudInputCheck::checkProperties
     getLabelOrDefault(dict, "randomSeed", 0, 0, 2000);
     getBoolOrDefault(dict, "randomEntryTime", false);
     // The axisymmetric mode's move is upstream's tracking of a chord
-    const bool axisymmetric = getBoolOrDefault(dict, "axisymmetric", false);
-    getChoiceOrDefault
-    (
-        dict, "tracking", axisymmetric ? "barycentric" : "cartesian",
-        axisymmetric
-      ? wordList({"barycentric"})
-      : wordList({"cartesian", "barycentric"})
-    );
+    boxWalk::selected(dict, getBoolOrDefault(dict, "axisymmetric", false));
 
     const wordList species(dict.get<wordList>("typeIdList"));
     if (species.empty())
@@ -838,18 +831,13 @@ Foam::gasCloud::gasCloud(const word& cloudName, const fvMesh& mesh)
             axisymmetric_.active()
         )
     ),
-    boxes_(),
+    boxes_(nullptr),
     writeState_(true),
     atCollisionsIndex_(-1)
 {
-    if
-    (
-        !axisymmetric_.active()
-     && particleProperties().getOrDefault<word>("tracking", "cartesian")
-     == "cartesian"
-    )
+    if (boxWalk::selected(particleProperties(), axisymmetric_.active()))
     {
-        boxes_.reset(new boxWalk(mesh));
+        boxes_ = &boxWalk::New(mesh);
         Info<< "Gas tracking: Cartesian through "
             << returnReduce(boxes_->nWalkable(), sumOp<label>())
             << " of " << returnReduce(mesh.nCells(), sumOp<label>())
@@ -875,7 +863,7 @@ Foam::gasCloud::gasCloud
     vibration_(readVibration()),
     account_("Simulators", mesh.boundaryMesh(), 0),
     randomEntryTime_(false),    // the fill moves nothing
-    boxes_(),
+    boxes_(nullptr),
     writeState_(false),
     atCollisionsIndex_(-1)
 {
@@ -1027,7 +1015,7 @@ void Foam::gasCloud::evolve()
     // majorant and raise it for the next step when a candidate exceeds it
     const scalarField drawnMax(sigmaTcRMax().primitiveField());
 
-    if (boxes_.valid())
+    if (boxes_)
     {
         evolveCartesian();
     }
@@ -1047,7 +1035,7 @@ void Foam::gasCloud::evolve()
         }
     }
 
-    if (axisymmetric_.weighted() && !boxes_.valid())
+    if (axisymmetric_.weighted() && !boxes_)
     {
         sampleWeighted();
     }

@@ -212,6 +212,11 @@ const Foam::word& Foam::SolidCloud<CloudType>::checkInput
     getClosed(constProps, "specularFraction", 0, 1);
     getClosed(constProps, "thermalAccommodation", 0, 1);
 
+    boxWalk::selected
+    (
+        props, getBoolOrDefault(props, "axisymmetric", false)
+    );
+
     const dictionary& models = props.subDict("subModels");
 
     // The layer below ours: MPPIC or colliding
@@ -291,7 +296,7 @@ const Foam::word& Foam::SolidCloud<CloudType>::checkInput
         {
             "solution", "constantProperties", "subModels", "cloudFunctions",
             "axisymmetric", "radialExtent", "maxRadialWeight", "cloudType",
-            "randomSeed", "reportInterval"
+            "randomSeed", "reportInterval", "tracking"
         }
     );
     rejectMisspelt
@@ -445,7 +450,8 @@ Foam::SolidCloud<CloudType>::SolidCloud
         (
             this->particleProperties(), "reportInterval", 1, 1, labelMax
         )
-    )
+    ),
+    boxes_(nullptr)
 {
     const dictionary& dict = this->particleProperties();
     const polyMesh& mesh = rho.mesh();
@@ -465,6 +471,15 @@ Foam::SolidCloud<CloudType>::SolidCloud
     if (axisymmetric_.weighted())
     {
         account_.countWeighting();
+    }
+
+    if (boxWalk::selected(dict, axisymmetric_.active()))
+    {
+        boxes_ = &boxWalk::New(mesh);
+        Info<< "Grain tracking (" << cloudName << "): Cartesian through "
+            << returnReduce(boxes_->nWalkable(), sumOp<label>())
+            << " of " << returnReduce(mesh.nCells(), sumOp<label>())
+            << " cells, barycentric elsewhere" << nl << endl;
     }
 
     // The cloud's own stream (the isotropy models' draws), seeded from

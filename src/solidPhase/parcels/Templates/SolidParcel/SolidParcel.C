@@ -9,6 +9,12 @@
 #include "wallPolyPatch.H"
 #include "MPPICParcel.H"
 
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+template<class ParcelType>
+const Foam::boxWalk* Foam::SolidParcel<ParcelType>::boxes_ = nullptr;
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 template<class ParcelType>
@@ -121,14 +127,23 @@ bool Foam::SolidParcel<ParcelType>::move
     const scalar trackTime
 )
 {
+    if (!onWedge())
+    {
+        // The cloud's Cartesian tracking while this parcel moves
+        boxes_ = cloud.boxes();
+        const bool keep =
+        (
+            cloud.trackingDisplacement()
+          ? moveAlong(cloud, td, trackTime)
+          : ParcelType::move(cloud, td, trackTime)
+        );
+        boxes_ = nullptr;
+        return keep;
+    }
+
     if (cloud.trackingDisplacement())
     {
         return moveAlong(cloud, td, trackTime);
-    }
-
-    if (!onWedge())
-    {
-        return ParcelType::move(cloud, td, trackTime);
     }
 
     // The start point for the radial re-weighting (position() costs a
@@ -200,6 +215,11 @@ Foam::scalar Foam::SolidParcel<ParcelType>::trackToFace
 {
     if (!onWedge())
     {
+        scalar left;
+        if (boxes_ && boxes_->trackToFace(*this, displacement, fraction, left))
+        {
+            return left;
+        }
         return ParcelType::trackToFace(displacement, fraction);
     }
 

@@ -7,6 +7,14 @@
 #include "boxWalk.H"
 #include "boundBox.H"
 #include "tetIndices.H"
+#include "inputChecks.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    defineTypeNameAndDebug(boxWalk, 0);
+}
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -148,7 +156,7 @@ inline void Foam::boxWalk::triangle
 
 Foam::boxWalk::boxWalk(const polyMesh& mesh)
 :
-    mesh_(mesh),
+    MeshObject<polyMesh, GeometricMeshObject, boxWalk>(mesh),
     sides_(mesh.nCells()),
     planes_(mesh.nCells()),
     corners_(mesh.nCells()),
@@ -170,6 +178,20 @@ Foam::boxWalk::boxWalk(const polyMesh& mesh)
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+bool Foam::boxWalk::selected(const dictionary& dict, const bool axisymmetric)
+{
+    return
+        inputChecks::getChoiceOrDefault
+        (
+            dict, "tracking", axisymmetric ? "barycentric" : "cartesian",
+            axisymmetric
+          ? wordList({"barycentric"})
+          : wordList({"cartesian", "barycentric"})
+        )
+     == "cartesian";
+}
+
 
 Foam::scalar Foam::boxWalk::walk
 (
@@ -255,6 +277,66 @@ Foam::point Foam::boxWalk::position(const particle& p) const
 }
 
 
+bool Foam::boxWalk::placeOnRay
+(
+    particle& p,
+    const label celli,
+    const label side,
+    const point& q,
+    const scalar reach
+) const
+{
+    // Barycentric coordinates to round-off: a point on a tet's face may
+    // come out a few ulps outside it
+    const scalar tol = 1e-9;
+
+    for (label tetPti = 1; tetPti < 3; ++tetPti)
+    {
+        point base, vertex1, vertex2;
+        triangle(celli, side, tetPti, base, vertex1, vertex2);
+
+        // x - centre = y1 (base - centre) + y2 (v1 - centre) + y3 (v2 - centre)
+        // with x the fraction 1/reach of the way from the centre to q in
+        // the side's plane: the triangle's weights of q, in the plane's
+        // two axes u, w, times that fraction
+        const label u = (side/2 + 1) % 3;
+        const label w = (side/2 + 2) % 3;
+        const scalar e1u = vertex1[u] - base[u], e1w = vertex1[w] - base[w];
+        const scalar e2u = vertex2[u] - base[u], e2w = vertex2[w] - base[w];
+        const scalar qu = q[u] - base[u], qw = q[w] - base[w];
+        const scalar fraction = 1/reach/(e1u*e2w - e2u*e1w);
+        const scalar y2 = fraction*(qu*e2w - e2u*qw);
+        const scalar y3 = fraction*(e1u*qw - qu*e1w);
+        const vector y(1/reach - y2 - y3, y2, y3);
+        // On the side itself the centre's weight is zero exactly, as
+        // upstream's tracking leaves a particle on a face
+        const scalar y0 = reach == 1 ? 0 : 1 - y.x() - y.y() - y.z();
+
+        if (min(y0, cmptMin(y)) >= -tol)
+        {
+            barycentric b(y0, y.x(), y.y(), y.z());
+            for (direction i = 0; i < 4; ++i)
+            {
+                b[i] = max(b[i], scalar(0));
+            }
+            b /= b.a() + b.b() + b.c() + b.d();
+
+            p.cell() = celli;
+            p.tetFace() = sides_[celli][side];
+            p.tetPt() = tetPti;
+
+            // particle offers its coordinates read-only, having no setter
+            // other than a tracking search (relocate) from the cell centre;
+            // the particle itself is not const
+            const_cast<barycentric&>(p.coordinates()) = b;
+            return true;
+        }
+    }
+
+    return false;
+}
+
+
 bool Foam::boxWalk::place
 (
     particle& p,
@@ -274,55 +356,57 @@ bool Foam::boxWalk::place
         side = 0;
     }
 
-    // Barycentric coordinates to round-off: a point on a tet's face may
-    // come out a few ulps outside it
-    const scalar tol = 1e-9;
-
-    for (label tetPti = 1; tetPti < 3; ++tetPti)
+    if (!placeOnRay(p, celli, side, centre + reach*d, reach))
     {
-        point base, vertex1, vertex2;
-        triangle(celli, side, tetPti, base, vertex1, vertex2);
+        return false;
+    }
+    p.face() = -1;
+    return true;
+}
 
-        // x - centre = y1 (base - centre) + y2 (v1 - centre) + y3 (v2 - centre)
-        // The triangle lies in the side's plane, which x is the fraction
-        // 1/reach of the way to from the centre: the triangle's weights of
-        // the point q where the ray meets the plane, in the plane's two
-        // axes u, w, times that fraction
-        const label u = (side/2 + 1) % 3;
-        const label w = (side/2 + 2) % 3;
-        const point q(centre + reach*d);
-        const scalar e1u = vertex1[u] - base[u], e1w = vertex1[w] - base[w];
-        const scalar e2u = vertex2[u] - base[u], e2w = vertex2[w] - base[w];
-        const scalar qu = q[u] - base[u], qw = q[w] - base[w];
-        const scalar fraction = 1/reach/(e1u*e2w - e2u*e1w);
-        const scalar y2 = fraction*(qu*e2w - e2u*qw);
-        const scalar y3 = fraction*(e1u*qw - qu*e1w);
-        const vector y(1/reach - y2 - y3, y2, y3);
-        const scalar y0 = 1 - y.x() - y.y() - y.z();
 
-        if (min(y0, cmptMin(y)) >= -tol)
-        {
-            barycentric b(y0, y.x(), y.y(), y.z());
-            for (direction i = 0; i < 4; ++i)
-            {
-                b[i] = max(b[i], scalar(0));
-            }
-            b /= b.a() + b.b() + b.c() + b.d();
-
-            p.cell() = celli;
-            p.tetFace() = sides_[celli][side];
-            p.tetPt() = tetPti;
-            p.face() = -1;
-
-            // particle offers its coordinates read-only, having no setter
-            // other than a tracking search (relocate) from the cell centre;
-            // the particle itself is not const
-            const_cast<barycentric&>(p.coordinates()) = b;
-            return true;
-        }
+bool Foam::boxWalk::trackToFace
+(
+    particle& p,
+    const vector& displacement,
+    const scalar fraction,
+    scalar& left
+) const
+{
+    const label celli = p.cell();
+    if (!walkable(celli))
+    {
+        return false;
     }
 
-    return false;
+    const point x0(position(p));
+    scalar t;
+    const label side = sideAhead(planes_[celli], x0, displacement, t);
+
+    // The path ends in the cell (or does not move)
+    if (side < 0 || t >= 1)
+    {
+        if (!place(p, x0 + displacement, celli))
+        {
+            return false;
+        }
+        p.stepFraction() += fraction;
+        left = 0;
+        return true;
+    }
+
+    // Onto the side's face, at the point the path meets its plane
+    t = max(t, scalar(0));
+    point x(x0 + t*displacement);
+    x[side/2] = planes_[celli][side];
+    if (!placeOnRay(p, celli, side, x, 1))
+    {
+        return false;
+    }
+    p.face() = sides_[celli][side];
+    p.stepFraction() += t*fraction;
+    left = 1 - t;
+    return true;
 }
 
 
