@@ -112,21 +112,31 @@ inline Foam::label Foam::boxWalk::sideAhead
     const FixedList<scalar, 6>& planes,
     const point& origin,
     const vector& direction,
-    scalar& t
+    scalar& distance,
+    scalar& speed
 )
 {
-    t = GREAT;
+    // The smallest distance/speed, compared as products
     label side = -1;
+    distance = 1;
+    speed = 0;
     for (label a = 0; a < 3; ++a)
     {
         if (direction[a] != 0)
         {
-            const label ahead = 2*a + (direction[a] > 0);
-            const scalar ta = (planes[ahead] - origin[a])/direction[a];
-            if (ta < t)
+            const bool up = direction[a] > 0;
+            const scalar da =
+                max
+                (
+                    up ? planes[2*a + 1] - origin[a] : origin[a] - planes[2*a],
+                    scalar(0)
+                );
+            const scalar sa = mag(direction[a]);
+            if (da*speed < distance*sa || side < 0)
             {
-                t = ta;
-                side = ahead;
+                distance = da;
+                speed = sa;
+                side = 2*a + up;
             }
         }
     }
@@ -213,15 +223,15 @@ Foam::scalar Foam::boxWalk::walk
     scalar tIn = 0;
     for (label n = 0; n < mesh_.nCells(); ++n)
     {
-        scalar tOut;
-        const label side = sideAhead(planes_[c], x0, s, tOut);
+        scalar distance, speed;
+        const label side = sideAhead(planes_[c], x0, s, distance, speed);
 
-        if (tOut >= 1)
+        if (side < 0 || distance >= speed)
         {
             celli = c;
             return 1;
         }
-        tOut = max(tOut, tIn);
+        const scalar tOut = max(distance/speed, tIn);
 
         const label facei = sides_[c][side];
         label next = -1;
@@ -256,13 +266,8 @@ Foam::point Foam::boxWalk::position(const particle& p) const
         return p.position();
     }
 
-    const FixedList<label, 6>& sides = sides_[celli];
-    label side = 0;
-    while (side < 6 && sides[side] != p.tetFace())
-    {
-        ++side;
-    }
-    if (side == 6)
+    const label side = tetSide(p, celli);
+    if (side < 0)
     {
         return p.position();
     }
@@ -277,48 +282,97 @@ Foam::point Foam::boxWalk::position(const particle& p) const
 }
 
 
-bool Foam::boxWalk::placeOnRay
+bool Foam::boxWalk::moveInTet
 (
     particle& p,
     const label celli,
     const label side,
-    const point& q,
-    const scalar reach
+    const vector& s
 ) const
 {
+    const point& centre = mesh_.cellCentres()[celli];
+    point base, vertex1, vertex2;
+    triangle(celli, side, p.tetPt(), base, vertex1, vertex2);
+
+    // x - centre = Y (base - centre) + y2 (v1 - base) + y3 (v2 - base),
+    // Y = y1 + y2 + y3: along the side's axis a only Y counts (the
+    // triangle lies in the side's plane), in its plane's axes u, w a 2 x 2
+    // solve with the triangle's edges
+    const label a = side/2;
+    const label u = (a + 1) % 3;
+    const label w = (a + 2) % 3;
+    const scalar dY = s[a]/(base[a] - centre[a]);
+    const scalar ru = s[u] - dY*(base[u] - centre[u]);
+    const scalar rw = s[w] - dY*(base[w] - centre[w]);
+    const scalar e1u = vertex1[u] - base[u], e1w = vertex1[w] - base[w];
+    const scalar e2u = vertex2[u] - base[u], e2w = vertex2[w] - base[w];
+    const scalar det = e1u*e2w - e2u*e1w;
+    const scalar dy2 = (ru*e2w - e2u*rw)/det;
+    const scalar dy3 = (e1u*rw - ru*e1w)/det;
+
+    const barycentric& y = p.coordinates();
+    const barycentric moved
+    (
+        y.a() - dY, y.b() + dY - dy2 - dy3, y.c() + dy2, y.d() + dy3
+    );
+    if (min(min(moved.a(), moved.b()), min(moved.c(), moved.d())) < 0)
+    {
+        return false;
+    }
+
+    // (see placeOnSide)
+    const_cast<barycentric&>(p.coordinates()) = moved;
+    p.face() = -1;
+    return true;
+}
+
+
+bool Foam::boxWalk::placeOnSide
+(
+    particle& p,
+    const label celli,
+    const label side,
+    const vector& d,
+    const scalar along
+) const
+{
+    const point& centre = mesh_.cellCentres()[celli];
+
     // Barycentric coordinates to round-off: a point on a tet's face may
     // come out a few ulps outside it
     const scalar tol = 1e-9;
+
+    // The point x = centre + d is the fraction along of the way from the
+    // centre to q = centre + d/along on the side's plane: its weights of
+    // the triangle's corners are along times q's, found in the plane's
+    // two axes u, w
+    const label u = (side/2 + 1) % 3;
+    const label w = (side/2 + 2) % 3;
 
     for (label tetPti = 1; tetPti < 3; ++tetPti)
     {
         point base, vertex1, vertex2;
         triangle(celli, side, tetPti, base, vertex1, vertex2);
 
-        // x - centre = y1 (base - centre) + y2 (v1 - centre) + y3 (v2 - centre)
-        // with x the fraction 1/reach of the way from the centre to q in
-        // the side's plane: the triangle's weights of q, in the plane's
-        // two axes u, w, times that fraction
-        const label u = (side/2 + 1) % 3;
-        const label w = (side/2 + 2) % 3;
         const scalar e1u = vertex1[u] - base[u], e1w = vertex1[w] - base[w];
         const scalar e2u = vertex2[u] - base[u], e2w = vertex2[w] - base[w];
-        const scalar qu = q[u] - base[u], qw = q[w] - base[w];
-        const scalar fraction = 1/reach/(e1u*e2w - e2u*e1w);
-        const scalar y2 = fraction*(qu*e2w - e2u*qw);
-        const scalar y3 = fraction*(e1u*qw - qu*e1w);
-        const vector y(1/reach - y2 - y3, y2, y3);
+        const scalar cu = centre[u] - base[u], cw = centre[w] - base[w];
+        const scalar det = e1u*e2w - e2u*e1w;
+        const scalar y2 =
+            (along*(cu*e2w - e2u*cw) + (d[u]*e2w - e2u*d[w]))/det;
+        const scalar y3 =
+            (along*(e1u*cw - cu*e1w) + (e1u*d[w] - d[u]*e1w))/det;
+        const scalar y1 = along - y2 - y3;
         // On the side itself the centre's weight is zero exactly, as
         // upstream's tracking leaves a particle on a face
-        const scalar y0 = reach == 1 ? 0 : 1 - y.x() - y.y() - y.z();
+        const scalar y0 = along == 1 ? 0 : 1 - along;
 
-        if (min(y0, cmptMin(y)) >= -tol)
+        if (min(min(y0, y1), min(y2, y3)) >= -tol)
         {
-            barycentric b(y0, y.x(), y.y(), y.z());
-            for (direction i = 0; i < 4; ++i)
-            {
-                b[i] = max(b[i], scalar(0));
-            }
+            barycentric b
+            (
+                y0, max(y1, scalar(0)), max(y2, scalar(0)), max(y3, scalar(0))
+            );
             b /= b.a() + b.b() + b.c() + b.d();
 
             p.cell() = celli;
@@ -346,17 +400,21 @@ bool Foam::boxWalk::place
 {
     const point& centre = mesh_.cellCentres()[celli];
     const vector d(x - centre);
+
     // The side the ray from the centre through x leaves by: its tets
-    // (centre, face triangle) hold x
-    scalar reach;
-    label side = sideAhead(planes_[celli], centre, d, reach);
-    if (side < 0)
+    // (centre, face triangle) hold x, the fraction speed/distance of the
+    // way to its plane
+    scalar distance, speed;
+    label side = sideAhead(planes_[celli], centre, d, distance, speed);
+    if (side < 0 || distance == 0)
     {
         // x at the centre (to the last bit): any tet holds it
         side = 0;
+        speed = 0;
+        distance = 1;
     }
 
-    if (!placeOnRay(p, celli, side, centre + reach*d, reach))
+    if (!placeOnSide(p, celli, side, d, speed/distance))
     {
         return false;
     }
@@ -378,13 +436,27 @@ bool Foam::boxWalk::trackToFace
     {
         return false;
     }
+    const label tetSidei = tetSide(p, celli);
+    if (tetSidei < 0)
+    {
+        return false;
+    }
+
+    // Most pieces of a path end in the tet they start in
+    if (moveInTet(p, celli, tetSidei, displacement))
+    {
+        p.stepFraction() += fraction;
+        left = 0;
+        return true;
+    }
 
     const point x0(position(p));
-    scalar t;
-    const label side = sideAhead(planes_[celli], x0, displacement, t);
+    scalar distance, speed;
+    const label side =
+        sideAhead(planes_[celli], x0, displacement, distance, speed);
 
     // The path ends in the cell (or does not move)
-    if (side < 0 || t >= 1)
+    if (side < 0 || distance >= speed)
     {
         if (!place(p, x0 + displacement, celli))
         {
@@ -396,10 +468,15 @@ bool Foam::boxWalk::trackToFace
     }
 
     // Onto the side's face, at the point the path meets its plane
-    t = max(t, scalar(0));
-    point x(x0 + t*displacement);
-    x[side/2] = planes_[celli][side];
-    if (!placeOnRay(p, celli, side, x, 1))
+    // (placeOnSide reads the two coordinates in the side's plane only)
+    const scalar t = distance/speed;
+    if
+    (
+        !placeOnSide
+        (
+            p, celli, side, x0 + t*displacement - mesh_.cellCentres()[celli], 1
+        )
+    )
     {
         return false;
     }
