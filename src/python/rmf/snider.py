@@ -41,12 +41,19 @@ Tolerances and where they come from:
   between layer centres) within one layer height (7.5 mm, the resolution
   of the profile); different decompositions draw different random
   isotropy kicks, so the runs agree statistically, not bit for bit.
-- restitution: at 0.2 s the bed surface of the e = 0.5 run is sharper than
-  the e = 0.85 run's.  Width of the surface: the height from where alpha(z)
-  falls through 0.9 alphaPacked (above the top packed layer) to where it
-  falls below 0.05, each interpolated linearly between layer centres (on
-  layer centres alone the reduced runs tied at 22.5 mm, one layer being
-  7.5 mm).
+- restitution: at 0.6 s the interface of the e = 0.5 runs is sharper than
+  that of the e = 0.85 runs: the mean of their 10-90 % widths over the
+  same seeds (validate.py: randomSeed 0, 1 and 2) is smaller.  One
+  realisation each does not resolve it.  The reduced runs' widths at
+  0.6 s, seeds 0, 1, 2 (2026-12-04, ./Alltest): e = 0.85 8.62, 8.29,
+  7.68 mm, e = 0.5 7.09, 7.26, 7.77 mm, so the means differ by 0.82 mm,
+  2.4 times their standard error, and seed 2 alone has them the other
+  way round.
+  At 0.2 s the bed surface does not resolve it at all: widths (from 0.9
+  alphaPacked above the top packed layer to alpha 0.05) 12.85, 12.89,
+  12.99, 12.91 mm for e = 0.85 and 12.90, 12.86, 12.68, 12.96 mm for
+  e = 0.5 (seeds 0 to 3).  A single pair compared at 0.2 s, the check
+  until then, passed or failed with the realisation.
 """
 
 import argparse
@@ -366,14 +373,19 @@ def compare(a, b, time="0.6"):
     return bool(ok)
 
 
-def sharper(sharp, soft, time="0.2"):
-    """The e = 0.5 bed surface (sharp) is narrower than e = 0.85's (soft)."""
-    z = np.array(sharp["z"])
-    ws = surface_width(z, np.array(sharp["profiles"][time]))
-    wf = surface_width(z, np.array(soft["profiles"][time]))
-    return report(f"e = 0.5 sharper at {time} s", ws < wf,
-                  f"surface width {ws*1e3:.1f} mm (e = 0.5) <"
-                  f" {wf*1e3:.1f} mm (e = 0.85)"), ws, wf
+def sharper(sharp, soft, time="0.6"):
+    """The e = 0.5 runs (sharp, summaries of check at time) have a smaller
+    mean 10-90 % interface width than the e = 0.85 runs (soft)."""
+    ws = [r["interfaceWidth"] for r in sharp]
+    wf = [r["interfaceWidth"] for r in soft]
+
+    def listed(widths):
+        return ", ".join(f"{w*1e3:.2f}" for w in widths)
+
+    return report(f"e = 0.5 sharper at {time} s", np.mean(ws) < np.mean(wf),
+                  f"mean 10-90 % width {np.mean(ws)*1e3:.2f} mm (e = 0.5: "
+                  f"{listed(ws)}) < {np.mean(wf)*1e3:.2f} mm (e = 0.85: "
+                  f"{listed(wf)})"), float(np.mean(ws)), float(np.mean(wf))
 
 
 def plot(runs, output, times=TIMES, title=None):
