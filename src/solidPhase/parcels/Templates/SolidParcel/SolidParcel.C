@@ -91,6 +91,53 @@ struct wedgeCorrection<MPPICParcel<ParcelType>>
     }
 };
 
+
+//- MPPIC's correction passes: none but MPPIC's
+template<class ParcelType>
+struct correctionMove
+{
+    template<class Parcel, class TrackCloudType, class TrackingData>
+    static bool applies(Parcel&, TrackCloudType&, TrackingData&, scalar, bool&)
+    {
+        return false;
+    }
+};
+
+//- The correction pass of MPPIC's damping and packing moves the parcel
+//  by its correction UCorrect over the rest of the step, with its own
+//  velocity kept and the correction added for the fraction moved, as
+//  MPPICParcel does; the move is SolidParcel::moveAlong, in one piece to
+//  the next face, not upstream's move in maxCo pieces with each piece's
+//  forces (which are off during the corrections)
+template<class ParcelType>
+struct correctionMove<MPPICParcel<ParcelType>>
+{
+    template<class Parcel, class TrackCloudType, class TrackingData>
+    static bool applies
+    (
+        Parcel& p,
+        TrackCloudType& cloud,
+        TrackingData& td,
+        const scalar trackTime,
+        bool& keep
+    )
+    {
+        if (td.part() != TrackingData::tpCorrectTrack)
+        {
+            return false;
+        }
+
+        const vector U(p.U());
+        const scalar f = p.stepFraction();
+
+        p.U() = (1 - f)*p.UCorrect();
+        keep = p.moveAlong(cloud, td, trackTime);
+        p.U() = U + (p.stepFraction() - f)*p.UCorrect();
+
+        return true;
+    }
+};
+
 } // End namespace solidParcelLayers
 } // End namespace Foam
 
@@ -131,12 +178,21 @@ bool Foam::SolidParcel<ParcelType>::move
     {
         // The cloud's Cartesian tracking while this parcel moves
         boxes_ = cloud.boxes();
-        const bool keep =
+        bool keep;
+        if (cloud.trackingDisplacement())
+        {
+            keep = moveAlong(cloud, td, trackTime);
+        }
+        else if
         (
-            cloud.trackingDisplacement()
-          ? moveAlong(cloud, td, trackTime)
-          : ParcelType::move(cloud, td, trackTime)
-        );
+            !solidParcelLayers::correctionMove<ParcelType>::applies
+            (
+                *this, cloud, td, trackTime, keep
+            )
+        )
+        {
+            keep = ParcelType::move(cloud, td, trackTime);
+        }
         boxes_ = nullptr;
         return keep;
     }
@@ -176,16 +232,31 @@ bool Foam::SolidParcel<ParcelType>::moveAlong
     td.keepParticle = true;
     td.switchProcessor = false;
 
+    // The start of each piece only for cloud functions that ask for it
+    const bool functions = cloud.functions().size();
+
     while (td.keepParticle && !td.switchProcessor && this->stepFraction() < 1)
     {
+        // Over the whole step at the present velocity (a wall's rebound
+        // turns it)
+        const vector s(trackTime*this->U());
+        const point start(functions ? this->position() : point::zero);
         const scalar f = 1 - this->stepFraction();
-        const vector s(f*trackTime*this->U());
 
-        this->trackToFace(s, f);
+        if (this->active())
+        {
+            this->trackToFace(f*s, f);
+        }
+        else
+        {
+            // Stuck (upstream's stick interaction): the time passes
+            this->stepFraction() = 1;
+        }
 
         if
         (
-            this->onBoundaryFace()
+            cloud.trackingDisplacement()
+         && this->onBoundaryFace()
          && isA<wallPolyPatch>(this->mesh().boundaryMesh()[this->patch()])
         )
         {
@@ -196,6 +267,24 @@ bool Foam::SolidParcel<ParcelType>::moveAlong
                 << ": its contact with the wall failed (stiffness kn too low"
                 << " for the load, or the grain too fast for the sub-step)"
                 << exit(FatalError);
+        }
+
+        if (functions)
+        {
+            if (this->active() && this->onFace())
+            {
+                cloud.functions().postFace(*this, td.keepParticle);
+            }
+            cloud.functions().postMove
+            (
+                *this, (this->stepFraction() - 1 + f)*trackTime, start,
+                td.keepParticle
+            );
+        }
+
+        if (!this->active() || !this->onFace() || !td.keepParticle)
+        {
+            continue;
         }
 
         // An internal face: the next cell; a boundary face: its patch
