@@ -108,7 +108,7 @@ struct correctionMove
 //  velocity kept and the correction added for the fraction moved, as
 //  MPPICParcel does; the move is SolidParcel::moveAlong, in one piece to
 //  the next face, not upstream's move in maxCo pieces with each piece's
-//  forces (which are off during the corrections)
+//  forces (which are off during the corrections); on a 3-D or wedge mesh
 template<class ParcelType>
 struct correctionMove<MPPICParcel<ParcelType>>
 {
@@ -122,7 +122,14 @@ struct correctionMove<MPPICParcel<ParcelType>>
         bool& keep
     )
     {
-        if (td.part() != TrackingData::tpCorrectTrack)
+        // Upstream's move keeps a reduced-D (empty) mesh's parcels on its
+        // centre plane; a wedge's corrections have already lost their
+        // normal part
+        if
+        (
+            td.part() != TrackingData::tpCorrectTrack
+         || (p.mesh().nGeometricD() < 3 && !p.onWedge())
+        )
         {
             return false;
         }
@@ -178,21 +185,12 @@ bool Foam::SolidParcel<ParcelType>::move
     {
         // The cloud's Cartesian tracking while this parcel moves
         boxes_ = cloud.boxes();
-        bool keep;
-        if (cloud.trackingDisplacement())
-        {
-            keep = moveAlong(cloud, td, trackTime);
-        }
-        else if
+        const bool keep =
         (
-            !solidParcelLayers::correctionMove<ParcelType>::applies
-            (
-                *this, cloud, td, trackTime, keep
-            )
-        )
-        {
-            keep = ParcelType::move(cloud, td, trackTime);
-        }
+            cloud.trackingDisplacement()
+          ? moveAlong(cloud, td, trackTime)
+          : moveStep(cloud, td, trackTime)
+        );
         boxes_ = nullptr;
         return keep;
     }
@@ -206,7 +204,7 @@ bool Foam::SolidParcel<ParcelType>::move
     // tet's geometry: only here, not on every Cartesian move)
     const point start = this->position();
 
-    bool keep = ParcelType::move(cloud, td, trackTime);
+    bool keep = moveStep(cloud, td, trackTime);
 
     solidParcelLayers::wedgeCorrection<ParcelType>::drop(*this, td);
 
@@ -216,6 +214,30 @@ bool Foam::SolidParcel<ParcelType>::move
         td.keepParticle = keep;
     }
 
+    return keep;
+}
+
+
+template<class ParcelType>
+template<class TrackCloudType>
+bool Foam::SolidParcel<ParcelType>::moveStep
+(
+    TrackCloudType& cloud,
+    typename ParcelType::trackingData& td,
+    const scalar trackTime
+)
+{
+    bool keep;
+    if
+    (
+        !solidParcelLayers::correctionMove<ParcelType>::applies
+        (
+            *this, cloud, td, trackTime, keep
+        )
+    )
+    {
+        keep = ParcelType::move(cloud, td, trackTime);
+    }
     return keep;
 }
 
