@@ -47,28 +47,21 @@ import os
 
 import numpy as np
 
-from rmf import foam
+from rmf import foam, snider
 
-TUTORIAL = os.path.join(foam.PROJECT_DIR, "tutorials", "solids", "sniderSedimentation")
 BUILD = os.path.join(foam.PROJECT_DIR, "build", "validation", "grainTracking")
 PROPS = "constant/grainsProperties"
-INIT = "system/grainsInitialiseDict"
-PARCELS, WEIGHT = 20000, 749*162232//20000     # same alpha0 as the tutorial
+PARCELS = 20000         # of the tutorial's weight per alpha_0 (rmf.snider)
 STEPS = 40
 POSITION_TOL = 1e-9     # m
 VELOCITY_TOL = 1e-6     # m/s
 
 
 def initial_state(name):
-    case = foam.copy_setup(TUTORIAL, os.path.join(BUILD, name))
-    foam.set_entry(case, INIT, "regions/column/nParcels", PARCELS)
-    foam.set_entry(case, INIT, "regions/column/nParticle", WEIGHT)
-    foam.set_steps(case, STEPS)
-    foam.set_entry(case, "system/controlDict", "writePrecision", 17)
-    foam.set_entry(case, PROPS, "subModels/isotropyModel", "none")
-    foam.run(case, "blockMesh")
-    foam.run(case, "rarefiedMultiphaseInitialise")
-    return case
+    return snider.reduced_column(
+        os.path.join(BUILD, name), PARCELS, STEPS,
+        {("system/controlDict", "writePrecision"): 17,
+         (PROPS, "subModels/isotropyModel"): "none"})
 
 
 def run(base, tracking, np_):

@@ -84,6 +84,24 @@ TUTORIAL = os.path.join(foam.PROJECT_DIR, "tutorials", "solids", "sniderSediment
 TUTORIAL_SIDE, TUTORIAL_CELLS = 0.138, 15
 
 
+def reduced_column(dst, parcels, steps, entries=None):
+    """The tutorial with parcels parcels of the weight that keeps its
+    alpha_0, run for steps steps; entries: {(file, entry): value} set
+    besides.  Meshed and initialised; returns the case."""
+    case = foam.copy_setup(TUTORIAL, dst)
+    init = "system/grainsInitialiseDict"
+    full = int(foam.get_entry(TUTORIAL, init, "regions/column/nParcels"))
+    weight = int(foam.get_entry(TUTORIAL, init, "regions/column/nParticle"))
+    foam.set_entry(case, init, "regions/column/nParcels", parcels)
+    foam.set_entry(case, init, "regions/column/nParticle", weight*full//parcels)
+    foam.set_steps(case, steps)
+    for (path, entry), value in (entries or {}).items():
+        foam.set_entry(case, path, entry, value)
+    foam.run(case, "blockMesh")
+    foam.run(case, "rarefiedMultiphaseInitialise")
+    return case
+
+
 def narrow_column(dst, cells, resolution=1):
     """Fresh set-up (not meshed) of the tutorial in a column of cells x
     cells of its 15 x 15 cells (40 layers, side 0.138 cells/15 m), its

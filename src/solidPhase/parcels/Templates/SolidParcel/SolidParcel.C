@@ -92,7 +92,7 @@ struct wedgeCorrection<MPPICParcel<ParcelType>>
 };
 
 
-//- MPPIC's correction passes: none but MPPIC's
+//- Correction passes: only MPPIC parcels have them
 template<class ParcelType>
 struct correctionMove
 {
@@ -255,7 +255,7 @@ bool Foam::SolidParcel<ParcelType>::moveAlong
     td.switchProcessor = false;
 
     // The start of each piece only for cloud functions that ask for it
-    const bool functions = cloud.functions().size();
+    const bool functions = cloud.functions().size() > 0;
 
     while (td.keepParticle && !td.switchProcessor && this->stepFraction() < 1)
     {
