@@ -92,14 +92,20 @@ struct wedgeCorrection<MPPICParcel<ParcelType>>
 };
 
 
-//- Correction passes: only MPPIC parcels have them
+//- A step's move: upstream's, but for MPPIC's correction passes (below)
 template<class ParcelType>
-struct correctionMove
+struct stepMove
 {
     template<class Parcel, class TrackCloudType, class TrackingData>
-    static bool applies(Parcel&, TrackCloudType&, TrackingData&, scalar, bool&)
+    static bool move
+    (
+        Parcel& p,
+        TrackCloudType& cloud,
+        TrackingData& td,
+        const scalar trackTime
+    )
     {
-        return false;
+        return p.ParcelType::move(cloud, td, trackTime);
     }
 };
 
@@ -110,16 +116,15 @@ struct correctionMove
 //  the next face, not upstream's move in maxCo pieces with each piece's
 //  forces (which are off during the corrections); on a 3-D or wedge mesh
 template<class ParcelType>
-struct correctionMove<MPPICParcel<ParcelType>>
+struct stepMove<MPPICParcel<ParcelType>>
 {
     template<class Parcel, class TrackCloudType, class TrackingData>
-    static bool applies
+    static bool move
     (
         Parcel& p,
         TrackCloudType& cloud,
         TrackingData& td,
-        const scalar trackTime,
-        bool& keep
+        const scalar trackTime
     )
     {
         // Upstream's move keeps a reduced-D (empty) mesh's parcels on its
@@ -131,17 +136,17 @@ struct correctionMove<MPPICParcel<ParcelType>>
          || (p.mesh().nGeometricD() < 3 && !p.onWedge())
         )
         {
-            return false;
+            return p.MPPICParcel<ParcelType>::move(cloud, td, trackTime);
         }
 
         const vector U(p.U());
         const scalar f = p.stepFraction();
 
         p.U() = (1 - f)*p.UCorrect();
-        keep = p.moveAlong(cloud, td, trackTime);
+        const bool keep = p.moveAlong(cloud, td, trackTime);
         p.U() = U + (p.stepFraction() - f)*p.UCorrect();
 
-        return true;
+        return keep;
     }
 };
 
@@ -227,18 +232,10 @@ bool Foam::SolidParcel<ParcelType>::moveStep
     const scalar trackTime
 )
 {
-    bool keep;
-    if
+    return solidParcelLayers::stepMove<ParcelType>::move
     (
-        !solidParcelLayers::correctionMove<ParcelType>::applies
-        (
-            *this, cloud, td, trackTime, keep
-        )
-    )
-    {
-        keep = ParcelType::move(cloud, td, trackTime);
-    }
-    return keep;
+        *this, cloud, td, trackTime
+    );
 }
 
 
