@@ -282,3 +282,32 @@ def test_grains_need_axisymmetric(meshed):
     for text in ("FOAM FATAL IO ERROR", "'axisymmetric'", "constant/dsmcProperties",
                  "true on a wedge mesh"):
         assert text in out, (text, out[-1500:])
+
+
+@pytest.mark.parametrize("name", ["closedWeighted", "closedUnweighted"])
+def test_logged_totals_weighted(runs, name):
+    """The log's "Number of molecules" and "Mass in system" of the last
+    step are the sums of that step's weighted fields rhoN V and rhoM V over
+    the cells (written at the end), to 1e-5 relative: the log prints 6
+    significant digits.  Counting
+    simulators times F_N, as upstream does, would be 2-3 times off under
+    weighting (at RWF up to 10)."""
+    case = runs[name]
+    log = os.path.join(case, "log.rarefiedMultiphaseFoam")
+    t = foam.latest_time(case)
+    volumes = foam.cell_volumes(case)
+    n = len(volumes)
+    molecules = (foam.read_field(os.path.join(case, t, "rhoN"), n)*volumes).sum()
+    mass = (foam.read_field(os.path.join(case, t, "rhoM"), n)*volumes).sum()
+    logged_molecules = foam.log_values(log, "Number of molecules")[-1, 0]
+    logged_mass = foam.log_values(log, "Mass in system")[-1, 0]
+    simulators = foam.log_values(log, "Number of dsmc particles")[-1, 0]
+    weight = float(foam.get_entry(case, "constant/dsmcProperties", "nEquivalentParticles"))
+    tolerance = 1e-5        # the log's 6 significant digits
+    dm = abs(logged_molecules/molecules - 1)
+    dM = abs(logged_mass/mass - 1)
+    figures = (f"logged {logged_molecules:.6g} molecules, {logged_mass:.6g} kg; "
+               f"sum of rhoN V {molecules:.6g}, of rhoM V {mass:.6g} "
+               f"(relative {dm:.1e}, {dM:.1e}; tolerance {tolerance:g}, the log's digits); "
+               f"simulators x F_N {simulators*weight:.6g}")
+    assert _report(dm < tolerance and dM < tolerance, f"{name} logged totals", figures)

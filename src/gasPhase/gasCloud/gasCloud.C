@@ -1218,7 +1218,55 @@ void Foam::gasCloud::reportMajorantExcess()
 
 void Foam::gasCloud::info() const
 {
-    DSMCCloud<gasParcel>::info();
+    // Upstream's figures (DSMCCloud::info) from one pass over the
+    // simulators instead of four; each simulator counts its weight factor
+    // (1 unless radially weighted: then the figures match upstream's to
+    // the bit, sums in the same order)
+    const bool weighted = axisymmetric_.weighted();
+    const label simulators = returnReduce(size(), sumOp<label>());
+    scalar weights = 0;
+    scalar mass = 0;
+    vector momentum(Zero);
+    scalar linearKE = 0;
+    scalar internalE = 0;
+    for (const gasParcel& p : *this)
+    {
+        const scalar w = weighted ? axisymmetric_.weightAt(p.position()) : 1;
+        const scalar m = w*constProps(p.typeId()).mass();
+        weights += w;
+        mass += m;
+        momentum += m*p.U();
+        linearKE += 0.5*m*(p.U() & p.U());
+        internalE += w*p.Ei();
+    }
+    const scalar W = nParticle();
+    const scalar molecules =
+        weighted ? W*returnReduce(weights, sumOp<scalar>()) : simulators*W;
+    reduce(mass, sumOp<scalar>());
+    reduce(momentum, sumOp<vector>());
+    reduce(linearKE, sumOp<scalar>());
+    reduce(internalE, sumOp<scalar>());
+    momentum *= W;
+    linearKE *= W;
+    internalE *= W;
+
+    Info<< "Cloud name: " << name() << nl
+        << "    Number of dsmc particles        = " << simulators << endl;
+    if (simulators)
+    {
+        Info<< "    Number of molecules             = " << molecules << nl
+            << "    Mass in system                  = " << W*mass << nl
+            << "    Average linear momentum         = "
+            << momentum/molecules << nl
+            << "   |Average linear momentum|        = "
+            << mag(momentum)/molecules << nl
+            << "    Average linear kinetic energy   = "
+            << linearKE/molecules << nl
+            << "    Average internal energy         = "
+            << internalE/molecules << nl
+            << "    Average total energy            = "
+            << (internalE + linearKE)/molecules << endl;
+    }
 
     account_.info(mesh().boundaryMesh());
 }
