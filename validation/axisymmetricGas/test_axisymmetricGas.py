@@ -289,9 +289,8 @@ def test_logged_totals_weighted(runs, name):
     """The log's "Number of molecules" and "Mass in system" of the last
     step are the sums of that step's weighted fields rhoN V and rhoM V over
     the cells (written at the end), to 1e-5 relative: the log prints 6
-    significant digits.  Counting
-    simulators times F_N, as upstream does, would be 2-3 times off under
-    weighting (at RWF up to 10)."""
+    significant digits.  Counting simulators times F_N, as upstream does,
+    gave 6 times too few molecules in the weighted wedge (RWF up to 10)."""
     case = runs[name]
     log = os.path.join(case, "log.rarefiedMultiphaseFoam")
     t = foam.latest_time(case)
