@@ -5,6 +5,15 @@
 \*---------------------------------------------------------------------------*/
 
 #include "particleAccount.H"
+#include "restartState.H"
+
+// * * * * * * * * * * * * * * * Static Data  * * * * * * * * * * * * * * * //
+
+namespace
+{
+    //- Owner name of the totals in the restart state
+    const Foam::word accountOwner("particleAccount");
+}
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -134,6 +143,63 @@ void Foam::particleAccount::info(const polyBoundaryMesh& patches) const
     }
 
     Info<< endl;
+}
+
+
+void Foam::particleAccount::write
+(
+    const objectRegistry& db,
+    const word& cloudName,
+    const polyBoundaryMesh& patches
+) const
+{
+    dictionary escaped;
+    forAll(escapedTotal_, patchi)
+    {
+        if (escapedTotal_[patchi] != 0)
+        {
+            restartState::put
+            (
+                escaped, patches[patchi].name(), escapedTotal_[patchi]
+            );
+        }
+    }
+
+    dictionary state;
+    restartState::put(state, "in", inTotal_);
+    restartState::put(state, "lost", lostTotal_);
+    restartState::put(state, "cloned", clonedTotal_);
+    restartState::put(state, "deleted", deletedTotal_);
+    restartState::put(state, "crossed", crossedTotal_);
+    state.add("escaped", escaped);
+    restartState::write(db, cloudName, accountOwner, state, true);
+}
+
+
+void Foam::particleAccount::read
+(
+    const objectRegistry& db,
+    const word& cloudName,
+    const polyBoundaryMesh& patches
+)
+{
+    const dictionary state(restartState::read(db, cloudName, accountOwner));
+    if (state.empty())
+    {
+        return;
+    }
+
+    inTotal_ = state.get<scalar>("in");
+    lostTotal_ = state.get<scalar>("lost");
+    clonedTotal_ = state.get<scalar>("cloned");
+    deletedTotal_ = state.get<scalar>("deleted");
+    crossedTotal_ = state.get<scalar>("crossed");
+    const dictionary& escaped = state.subDict("escaped");
+    forAll(escapedTotal_, patchi)
+    {
+        escapedTotal_[patchi] =
+            escaped.getOrDefault<scalar>(patches[patchi].name(), 0);
+    }
 }
 
 

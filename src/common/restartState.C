@@ -152,12 +152,16 @@ void Foam::restartState::write
     const objectRegistry& db,
     const word& cloudName,
     const word& owner,
-    const dictionary& state
+    const dictionary& state,
+    const bool shared
 )
 {
     localIOdictionary dict(stateIO(db, cloudName, owner, IOobject::NO_READ));
     dict.merge(state);
-    dict.add("writtenBy", writer(db), true);
+    if (!shared)
+    {
+        dict.add("writtenBy", writer(db), true);
+    }
     const Time& time = db.time();
 
     // Every scalar with the digits that read back to the same double

@@ -846,6 +846,7 @@ Foam::gasCloud::gasCloud(const word& cloudName, const fvMesh& mesh)
 
     seedFromCase();
     readState();
+    account_.read(mesh, cloudName, mesh.boundaryMesh());
     setWeighting();
     drawMissingLevels();
 }
@@ -1291,6 +1292,7 @@ void Foam::gasCloud::writeFields() const
         cloud.collisionSelectionRemainder()
     );
     restartState::write(mesh(), name(), typeName, state);
+    account_.write(mesh(), name(), mesh().boundaryMesh());
 }
 
 

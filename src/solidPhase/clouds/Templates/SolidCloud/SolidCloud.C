@@ -497,6 +497,7 @@ Foam::SolidCloud<CloudType>::SolidCloud
     const dictionary state(restartState::read(mesh, cloudName, "solidCloud"));
     restartState::get(state, "random", this->rndGen());
     restartState::get(state, "weighting", rnd_);
+    account_.read(mesh, cloudName, mesh.boundaryMesh());
 }
 
 
@@ -663,6 +664,7 @@ void Foam::SolidCloud<CloudType>::writeFields() const
     restartState::put(state, "random", this->rndGen());
     restartState::put(state, "weighting", rnd_);
     restartState::write(mesh, cloud, "solidCloud", state);
+    account_.write(mesh, cloud, mesh.boundaryMesh());
 }
 
 
