@@ -1220,9 +1220,9 @@ void Foam::gasCloud::reportMajorantExcess()
 void Foam::gasCloud::info() const
 {
     // Upstream's figures (DSMCCloud::info) from one pass over the
-    // simulators instead of four; each simulator counts its weight factor
-    // (1 unless radially weighted: then the figures match upstream's to
-    // the bit, sums in the same order)
+    // simulators instead of four; each simulator counts its radial weight
+    // factor (unweighted, the figures are upstream's to the bit: the same
+    // sums in the same order)
     const bool weighted = axisymmetric_.weighted();
     const label simulators = returnReduce(size(), sumOp<label>());
     scalar weights = 0;
