@@ -192,11 +192,10 @@ bool Foam::functionObjects::gasMeanFields::write()
         );
 
         // A wall's pressure is the normal momentum flux the gas put on it
-        const polyPatch& pp = mesh_.boundaryMesh()[patchi];
-        if (isA<wallPolyPatch>(pp))
+        if (isA<wallPolyPatch>(mesh_.boundaryMesh()[patchi]))
         {
             p.boundaryFieldRef()[patchi] =
-                fD.boundaryField()[patchi] & (pp.faceAreas()/mag(pp.faceAreas()));
+                fD.boundaryField()[patchi] & mesh_.boundary()[patchi].nf();
         }
     }
 
