@@ -23,6 +23,7 @@ Foam::gasCellAverage::gasCellAverage
     mass_(mesh_.nCells(), Zero),
     momentum_(mesh_.nCells(), Zero),
     twiceKinetic_(mesh_.nCells(), Zero),
+    vibration_(gas.vibration()),
     m_(gas.constProps().size()),
     d_(m_.size()),
     omega_(m_.size()),
@@ -32,8 +33,7 @@ Foam::gasCellAverage::gasCellAverage
     (
         gas.binaryCollision().coeffDict().getOrDefault<scalar>("Tref", 273)
     ),
-    Wg_(gas.nParticle()),
-    vibration_(gas.vibration())
+    Wg_(gas.nParticle())
 {
     slot_.setSize(m_.size() + 1, Zero);
     forAll(m_, typei)
