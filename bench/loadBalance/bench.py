@@ -48,7 +48,7 @@ BUILD = os.path.join(foam.PROJECT_DIR, "build", "bench", "loadBalance")
 TARGET = 1.7
 CLOCK = re.compile(r"ClockTime = ([0-9.eE+-]+) s")
 BALANCE = re.compile(r"Load balance since the last write: compute time per processor "
-                     r"max/mean = (\S+) \(.*gas (\S+), grains (\S+)\)")
+                     r"max/mean = (\S+) \(.*gas (\S+), coupling (\S+), grains (\S+)\)")
 
 
 METIS = "method              metis;"
@@ -120,8 +120,9 @@ def main():
                      f"{results['serial'][1]/solver:.2f}), {rebalances} re-balances, "
                      f"imbalance max/mean over the writes: mean "
                      f"{sum(b[0] for b in balance)/n:.3f} (gas "
-                     f"{sum(b[1] for b in balance)/n:.3f}, grains "
-                     f"{sum(b[2] for b in balance)/n:.3f}), largest "
+                     f"{sum(b[1] for b in balance)/n:.3f}, coupling "
+                     f"{sum(b[2] for b in balance)/n:.3f}, grains "
+                     f"{sum(b[3] for b in balance)/n:.3f}), largest "
                      f"{max((b[0] for b in balance), default=1):.3f}")
         print(line, flush=True)
 

@@ -149,7 +149,13 @@ Foam::phaseBalancedDecomp::phaseBalancedDecomp
     weightFields_ = coeffs.getOrDefault<wordList>
     (
         "weightFields",
-        wordList({"cellCostGas", "cellCostGrains"})
+        wordList
+        ({
+            "cellCostGasSimulators",
+            "cellCostGasCollisions",
+            "cellCostCoupling",
+            "cellCostGrains"
+        })
     );
     if (weightFields_.empty())
     {

@@ -1003,6 +1003,31 @@ void Foam::gasCloud::drawInflowLevels(gasParcel& p)
 }
 
 
+Foam::tmp<Foam::scalarField> Foam::gasCloud::collisionCandidates() const
+{
+    tmp<scalarField> tcandidates(new scalarField(mesh().nCells(), Zero));
+    if (!binaryCollision().active())
+    {
+        return tcandidates;
+    }
+
+    scalarField& candidates = tcandidates.ref();
+    const scalarField& majorant =
+        const_cast<gasCloud&>(*this).sigmaTcRMax().primitiveField();
+    const scalar dt = mesh().time().deltaTValue();
+    const scalarField& V = mesh().cellVolumes();
+    forAll(candidates, celli)
+    {
+        const scalar n = cellOccupancy()[celli].size();
+        const scalar rwf = cellWeight_.size() ? cellWeight_[celli] : 1;
+        candidates[celli] =
+            0.5*n*max(n - 1, 0)*nParticle()*rwf*majorant[celli]*dt
+           /V[celli];
+    }
+    return tcandidates;
+}
+
+
 void Foam::gasCloud::evolve()
 {
     const label nBefore = this->size();

@@ -27,7 +27,10 @@ dictionary settings(const fvMesh& mesh)
     (
         mesh.time().controlDict().subOrEmptyDict("loadBalance")
     );
-    inputChecks::rejectUnknown(dict, {"cellCost", "maxImbalance"});
+    inputChecks::rejectUnknown
+    (
+        dict, {"cellCost", "maxImbalance", "candidateCost"}
+    );
     return dict;
 }
 
@@ -64,6 +67,14 @@ Foam::loadBalance::loadBalance(const fvMesh& mesh)
         (
             settings(mesh), "maxImbalance", 1, VGREAT, true, true, false,
             VGREAT
+        )
+    ),
+    candidateCost_
+    (
+        inputChecks::getInterval
+        (
+            settings(mesh), "candidateCost", 0, VGREAT, false, true, false,
+            0.2
         )
     ),
     cost_(),
@@ -114,8 +125,10 @@ const Foam::wordList& Foam::loadBalance::names()
 {
     static const wordList fields
     ({
-        "cellCostGas",
+        "cellCostGasSimulators",
+        "cellCostGasCollisions",
         cellTimer::fieldName,
+        "cellCostGrains",
         "cellCost"
     });
     return fields;
@@ -166,49 +179,97 @@ void Foam::loadBalance::begin(const phase which)
 
     cpuStart_ = cpuSeconds();
     commStart_ = communication();
-    costStart_ = cost_.size() ? sum(cost_[which].primitiveField()) : 0;
+    costStart_ =
+        which == coupling && cost_.size()
+      ? sum(cost_[couplingCells].primitiveField())
+      : 0;
 }
 
 
-void Foam::loadBalance::end(const phase which, const labelUList& perCell)
+Foam::scalar Foam::loadBalance::spent(const phase which, const scalar timed)
 {
     const scalar comm = communication() - commStart_;
     const scalar spent = cpuSeconds() - cpuStart_ - comm;
     computed_[which] += spent;
     communicated_ += comm;
 
-    if (cost_.empty())
-    {
-        return;
-    }
-
-    // What the cells' timers did not take; the communication time is
-    // counted in 10 ms ticks, so a step's share can come out negative: it
-    // is carried to the next step instead
-    scalarField& cost = cost_[which].primitiveFieldRef();
-    const scalar rest = spent - (sum(cost) - costStart_) + carried_[which];
+    // The communication time is counted in 10 ms ticks, so a step's share
+    // can come out negative: it is carried to the next step instead
+    const scalar rest = spent - timed + carried_[which];
     carried_[which] = min(rest, 0);
-    if (rest <= 0)
-    {
-        return;
-    }
+    return max(rest, 0);
+}
 
-    label total = 0;
-    for (const label n : perCell)
-    {
-        total += n;
-    }
+
+void Foam::loadBalance::spread
+(
+    scalarField& cost,
+    const scalar time,
+    const UList<scalar>& weights,
+    const scalar total
+)
+{
     if (total > 0)
     {
         forAll(cost, celli)
         {
-            cost[celli] += rest*perCell[celli]/total;
+            cost[celli] += time*weights[celli]/total;
         }
     }
     else if (cost.size())
     {
-        cost += rest/cost.size();
+        cost += time/cost.size();
     }
+}
+
+
+void Foam::loadBalance::endGas
+(
+    const labelUList& simulators,
+    const scalarField& candidates
+)
+{
+    const scalar rest = spent(gas, 0);
+    if (cost_.empty() || rest <= 0)
+    {
+        return;
+    }
+
+    scalarField N(simulators.size());
+    forAll(N, celli)
+    {
+        N[celli] = simulators[celli];
+    }
+    const scalarField C(candidateCost_*candidates);
+    const scalar total = sum(N) + sum(C);
+
+    spread(cost_[gasSimulators].primitiveFieldRef(), rest, N, total);
+    if (total > 0)
+    {
+        spread(cost_[gasCollisions].primitiveFieldRef(), rest, C, total);
+    }
+}
+
+
+void Foam::loadBalance::end(const phase which, const labelUList& parcels)
+{
+    const label fieldi = which == coupling ? couplingCells : grainParcels;
+    const scalar timed =
+        which == coupling && cost_.size()
+      ? sum(cost_[fieldi].primitiveField()) - costStart_
+      : 0;
+    const scalar rest = spent(which, timed);
+    if (cost_.empty() || rest <= 0)
+    {
+        return;
+    }
+
+    scalarField n(parcels.size());
+    forAll(n, celli)
+    {
+        n[celli] = parcels[celli];
+    }
+    spread(cost_[fieldi].primitiveFieldRef(), rest, n, sum(n));
 }
 
 
@@ -223,7 +284,7 @@ void Foam::loadBalance::endStep()
     if (Pstream::parRun())
     {
         // Largest and mean over the processors
-        const auto spread = [](const scalar x)
+        const auto overProcessors = [](const scalar x)
         {
             return Pair<scalar>
             (
@@ -236,16 +297,27 @@ void Foam::loadBalance::endStep()
             return s.second() > 0 ? s.first()/s.second() : 1;
         };
 
-        const Pair<scalar> all(spread(computed_[gas] + computed_[grains]));
-        const Pair<scalar> gasTimes(spread(computed_[gas]));
-        const Pair<scalar> grainTimes(spread(computed_[grains]));
-        const Pair<scalar> commTimes(spread(communicated_));
-        const scalar imbalance = ratio(all);
+        const Pair<scalar> both
+        (
+            overProcessors
+            (
+                computed_[gas] + computed_[coupling] + computed_[grains]
+            )
+        );
+        const Pair<scalar> gasTimes(overProcessors(computed_[gas]));
+        const Pair<scalar> couplingTimes
+        (
+            overProcessors(computed_[coupling])
+        );
+        const Pair<scalar> grainTimes(overProcessors(computed_[grains]));
+        const Pair<scalar> commTimes(overProcessors(communicated_));
+        const scalar imbalance = ratio(both);
 
         Info<< "Load balance since the last write: compute time per"
             << " processor max/mean = " << imbalance << " (max "
-            << all.first() << " s, mean " << all.second() << " s; gas "
-            << ratio(gasTimes) << ", grains " << ratio(grainTimes)
+            << both.first() << " s, mean " << both.second() << " s; gas "
+            << ratio(gasTimes) << ", coupling " << ratio(couplingTimes)
+            << ", grains " << ratio(grainTimes)
             << "); communication and waiting max " << commTimes.first()
             << " s, mean " << commTimes.second() << " s" << endl;
 
@@ -271,7 +343,11 @@ void Foam::loadBalance::endStep()
     {
         // The total, raised to 1 % of the mean cell where below
         scalarField& total = cost_[all].primitiveFieldRef();
-        total = cost_[gas].primitiveField() + cost_[grains].primitiveField();
+        total = Zero;
+        for (label fieldi = 0; fieldi < all; ++fieldi)
+        {
+            total += cost_[fieldi].primitiveField();
+        }
         const scalar floor =
             0.01*returnReduce(sum(total), sumOp<scalar>())
            /max(returnReduce(total.size(), sumOp<label>()), 1);

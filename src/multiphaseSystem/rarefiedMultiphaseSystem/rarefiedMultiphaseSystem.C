@@ -134,30 +134,34 @@ void Foam::rarefiedMultiphaseSystem::evolve()
         {
             perCell[celli] = occupancy[celli].size();
         }
-        balance_.end(loadBalance::gas, perCell);
+        balance_.endGas(perCell, gas_->collisionCandidates());
     }
 
     if (grains_.valid())
     {
-        balance_.begin(loadBalance::grains);
-
         // Step 4: the gas on the parcels, then the solid step
+        balance_.begin(loadBalance::coupling);
         grains_->sortByCell();
         grains_->coupleParcels(gas_.get());
+        balance_.end(loadBalance::coupling, grains_->parcelsPerCell());
+
+        balance_.begin(loadBalance::grains);
         if (gas_.valid())
         {
             // With gas the coupling exists and has sampled it
             carrier_->update(grains_->gasNow());
         }
         grains_->evolve();
+        const labelList parcels(grains_->parcelsPerCell());
+        balance_.end(loadBalance::grains, parcels);
 
         // Step 5: the gas side of two-way models
         if (gas_.valid())
         {
+            balance_.begin(loadBalance::coupling);
             grains_->coupleGas(gas_());
+            balance_.end(loadBalance::coupling, parcels);
         }
-
-        balance_.end(loadBalance::grains, grains_->parcelsPerCell());
     }
 
     balance_.endStep();

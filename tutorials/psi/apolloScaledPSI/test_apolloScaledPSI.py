@@ -486,10 +486,11 @@ def test_rebalance_cost(rebalanced):
     -1 % and +2 % (cells under 1 % of the mean cell are raised to it: at
     most +1 %; the phase time the cells' timers exceeded in the last step,
     carried to the next, and the log's rounding: well under 1 %; measured
-    +0.5 %); and decomposePar split the last segment's cells by the phases'
-    costs (method phaseBalanced): each processor's sum of the decomposed
-    cellCostGas and of cellCostGrains within 4 % of the mean (the method's
-    imbalance 1.03, and a margin for the integer weights)."""
+    +0.5 %); and decomposePar split the last segment's cells by the costs
+    of the step's parts (method phaseBalanced): each processor's sum of the
+    decomposed cellCostGasSimulators, cellCostGasCollisions,
+    cellCostCoupling and cellCostGrains within 4 % of the mean (the
+    method's imbalance 1.03, and a margin for the integer weights)."""
     logs = segments(rebalanced)
     t = foam.latest_time(rebalanced)
     total = sum(processor_field(rebalanced, p, t, "cellCost").sum() for p in (0, 1))
@@ -500,7 +501,8 @@ def test_rebalance_cost(rebalanced):
     start = min((d for d in os.listdir(os.path.join(rebalanced, "processor0"))
                  if re.fullmatch(r"[0-9.eE+-]+", d)), key=float)
     splits = {}
-    for name in ("cellCostGas", "cellCostGrains"):
+    for name in ("cellCostGasSimulators", "cellCostGasCollisions", "cellCostCoupling",
+                 "cellCostGrains"):
         shares = [processor_field(rebalanced, p, start, name).sum() for p in (0, 1)]
         splits[name] = max(shares)/np.mean(shares)
     ok = 0.99 <= total/(2*mean) <= 1.02 and max(splits.values()) <= 1.04
