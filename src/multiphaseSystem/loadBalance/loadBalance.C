@@ -297,7 +297,7 @@ void Foam::loadBalance::endStep()
             return s.second() > 0 ? s.first()/s.second() : 1;
         };
 
-        const Pair<scalar> both
+        const Pair<scalar> allPhases
         (
             overProcessors
             (
@@ -311,11 +311,12 @@ void Foam::loadBalance::endStep()
         );
         const Pair<scalar> grainTimes(overProcessors(computed_[grains]));
         const Pair<scalar> commTimes(overProcessors(communicated_));
-        const scalar imbalance = ratio(both);
+        const scalar imbalance = ratio(allPhases);
 
         Info<< "Load balance since the last write: compute time per"
             << " processor max/mean = " << imbalance << " (max "
-            << both.first() << " s, mean " << both.second() << " s; gas "
+            << allPhases.first() << " s, mean " << allPhases.second()
+            << " s; gas "
             << ratio(gasTimes) << ", coupling " << ratio(couplingTimes)
             << ", grains " << ratio(grainTimes)
             << "); communication and waiting max " << commTimes.first()
