@@ -46,7 +46,7 @@ METHODS = ("dual", "cachedDual")
 
 
 def timings(fa, fb, rel):
-    """The measured cost per cell (cellCost, cellCostGas, cellCostGrains):
+    """The measured cost per cell (cellCost and its parts, cellCost*):
     CPU times, never equal in two runs"""
     return os.path.basename(fa).startswith("cellCost")
 
