@@ -128,13 +128,20 @@ void Foam::rarefiedMultiphaseSystem::evolve()
         balance_.begin(loadBalance::gas);
         gas_->evolve();
 
-        const auto& occupancy = gas_->cellOccupancy();
-        labelList perCell(occupancy.size());
-        forAll(occupancy, celli)
+        // The counts per cell only where the cost per cell is measured
+        labelList simulators;
+        scalarField candidates;
+        if (balance_.perCell())
         {
-            perCell[celli] = occupancy[celli].size();
+            const auto& occupancy = gas_->cellOccupancy();
+            simulators.setSize(occupancy.size());
+            forAll(occupancy, celli)
+            {
+                simulators[celli] = occupancy[celli].size();
+            }
+            candidates = gas_->collisionCandidates();
         }
-        balance_.endGas(perCell, gas_->collisionCandidates());
+        balance_.endGas(simulators, candidates);
     }
 
     if (grains_.valid())
@@ -143,7 +150,12 @@ void Foam::rarefiedMultiphaseSystem::evolve()
         balance_.begin(loadBalance::coupling);
         grains_->sortByCell();
         grains_->coupleParcels(gas_.get());
-        balance_.end(loadBalance::coupling, grains_->parcelsPerCell());
+        labelList parcels;
+        if (balance_.perCell())
+        {
+            parcels = grains_->parcelsPerCell();
+        }
+        balance_.end(loadBalance::coupling, parcels);
 
         balance_.begin(loadBalance::grains);
         if (gas_.valid())
@@ -152,7 +164,10 @@ void Foam::rarefiedMultiphaseSystem::evolve()
             carrier_->update(grains_->gasNow());
         }
         grains_->evolve();
-        const labelList parcels(grains_->parcelsPerCell());
+        if (balance_.perCell())
+        {
+            parcels = grains_->parcelsPerCell();
+        }
         balance_.end(loadBalance::grains, parcels);
 
         // Step 5: the gas side of two-way models
