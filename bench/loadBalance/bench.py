@@ -5,7 +5,8 @@
 measured cost, against the serial run (doc/physics.md 1.5).
 
 Case: tutorials/psi/apolloScaledPSI, `-variant hybrid -settings demo` (the
-main job), to --end (default the demo's 100 us).  Four runs, one after
+dense demo of issue 16's target; the main job runs `-settings crater`), to
+--end (default the demo's 100 us).  Four runs, one after
 another, each on a fresh copy through the case's Allrun:
 
 - serial: `./Allrun`;

@@ -2,7 +2,9 @@
 # SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
 """The scene at a few written times: gas number density (batch mean,
 log colour) on the meridional plane, nozzle on top and the lunar surface
-at the bottom, with the grain parcels as dots (a random subset).
+at the bottom, with the grain parcels as dots (a random subset); below
+it, the dust layer magnified (heights up to four initial layer depths),
+every parcel coloured by its speed.
 
     /usr/bin/python3 scene.py [CASE] [--output PNG] [--times N]
 
@@ -44,8 +46,9 @@ def main(argv=None):
         sys.exit(f"scene: {case}: no written time after 0")
     pick = sorted({times[0], times[len(times)//2], times[-1]}, key=float)[:args.times]
 
-    fig, axes = plt.subplots(1, len(pick), figsize=(5.2*len(pick), 4.4),
-                             squeeze=False, constrained_layout=True)
+    fig, axes = plt.subplots(2, len(pick), figsize=(5.2*len(pick), 7.6),
+                             squeeze=False, constrained_layout=True,
+                             gridspec_kw={"height_ratios": [4.4, 2.6]})
     rng = np.random.default_rng(1)
     art = None
     for ax, t in zip(axes[0], pick):
@@ -80,12 +83,45 @@ def main(argv=None):
         ax.set_xlabel("r [mm]")
         ax.set_ylabel("height above the surface [mm]")
         ax.set_title(f"t = {1e6*float(t):.3g} us")
+    dots = layer_row(axes[1], case, pick, settings)
     if art is not None:
         fig.colorbar(art, ax=axes[0].tolist(), label="log10 gas number density [1/m^3]")
+    if dots is not None:
+        fig.colorbar(dots, ax=axes[1].tolist(), label="parcel speed [m/s]",
+                     extend="max")
     fig.suptitle("apolloScaledPSI: water-vapour plume (nozzle in red) and "
                  "regolith parcels (dots; dotted: initial layer top)")
     fig.savefig(output, dpi=110)
     print(f"scene: wrote {output} (times {' '.join(pick)})")
+
+
+def layer_row(axes, case, pick, settings):
+    """The dust layer magnified: every parcel at (r, height) coloured by its
+    speed, one colour scale over the times (faster than its top: its top
+    colour); the initial layer top dotted.
+    Returns the last scatter (for the colour bar), None without parcels."""
+    X_s = settings["surface"]
+    H = X_s - settings["layerTop"]
+    clouds = [psi.parcels(case, t) for t in pick]
+    speeds = [None if p is None else np.linalg.norm(p["U"], axis=1) for p in clouds]
+    every = np.concatenate([s for s in speeds if s is not None] + [np.zeros(1)])
+    # the scale's top at the 99.5th percentile: a few fast ejecta would
+    # leave every other parcel in the lowest colour
+    vmax = max(np.percentile(every, 99.5), 1e-3)
+    dots = None
+    for ax, t, p, speed in zip(axes, pick, clouds, speeds):
+        if p is not None:
+            order = np.argsort(speed)                   # the fastest on top
+            dots = ax.scatter(1e3*psi.radius(p["pos"][order]),
+                              1e6*(X_s - p["pos"][order, 0]), s=1, lw=0,
+                              c=speed[order], cmap="plasma", vmin=0, vmax=vmax)
+        ax.axhline(1e6*H, color="k", lw=0.5, ls=":")
+        ax.set_xlim(0, 1e3*settings["layerRadius"])
+        ax.set_ylim(0, 4e6*H)
+        ax.set_xlabel("r [mm]")
+        ax.set_ylabel("height above the surface [um]")
+        ax.set_title(f"dust layer at t = {1e6*float(t):.3g} us")
+    return dots
 
 
 if __name__ == "__main__":
