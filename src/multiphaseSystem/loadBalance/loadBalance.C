@@ -201,11 +201,12 @@ Foam::scalar Foam::loadBalance::spent(const phase which, const scalar timed)
 }
 
 
+template<class Type>
 void Foam::loadBalance::spread
 (
     scalarField& cost,
     const scalar time,
-    const UList<scalar>& weights,
+    const UList<Type>& weights,
     const scalar total
 )
 {
@@ -235,15 +236,10 @@ void Foam::loadBalance::endGas
         return;
     }
 
-    scalarField N(simulators.size());
-    forAll(N, celli)
-    {
-        N[celli] = simulators[celli];
-    }
     const scalarField C(candidateCost_*candidates);
-    const scalar total = sum(N) + sum(C);
+    const scalar total = sum(simulators) + sum(C);
 
-    spread(cost_[gasSimulators].primitiveFieldRef(), rest, N, total);
+    spread(cost_[gasSimulators].primitiveFieldRef(), rest, simulators, total);
     if (total > 0)
     {
         spread(cost_[gasCollisions].primitiveFieldRef(), rest, C, total);
@@ -264,12 +260,7 @@ void Foam::loadBalance::end(const phase which, const labelUList& parcels)
         return;
     }
 
-    scalarField n(parcels.size());
-    forAll(n, celli)
-    {
-        n[celli] = parcels[celli];
-    }
-    spread(cost_[fieldi].primitiveFieldRef(), rest, n, sum(n));
+    spread(cost_[fieldi].primitiveFieldRef(), rest, parcels, sum(parcels));
 }
 
 
