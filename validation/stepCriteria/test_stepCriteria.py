@@ -60,11 +60,6 @@ def fast_share_limit():
 
 
 FAST_SHARE_LIMIT = fast_share_limit()      # 0.15624
-LINE = re.compile(r"Gas step criteria since the last write: deltaT/\(mean collision time\) "
-                  r"largest (\S+) \((\d+) cells above 1\), cell transit \(\|U\| \+ 2 c_mp\) "
-                  r"deltaT/h largest (\S+) \((\d+) cells above 1\); share of a cell's kinetic "
-                  r"energy in simulators crossing more than the cell largest (\S+) \((\d+) cells "
-                  r"above (\S+)\)")
 
 
 def run(name, dt):
@@ -78,7 +73,7 @@ def run(name, dt):
     log = foam.run(case, "rarefiedMultiphaseFoam")
     with open(log) as f:
         text = f.read()
-    rows = LINE.findall(text)
+    rows = foam.step_criteria(text)
     assert len(rows) == 1, rows
     collision, n_collision, transit, n_transit, share, n_share, limit = rows[0]
     lam = foam.read_field(os.path.join(case, foam.latest_time(case), "lambda.gas")).mean()

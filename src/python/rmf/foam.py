@@ -405,6 +405,23 @@ def log_values(log, label):
     return np.array(rows)
 
 
+_STEP_CRITERIA = re.compile(
+    r"Gas step criteria since the last write: deltaT/\(mean collision time\) "
+    r"largest (\S+) \((\d+) cells above 1\), cell transit \(\|U\| \+ 2 c_mp\) "
+    r"deltaT/h largest (\S+) \((\d+) cells above 1\); share of a cell's kinetic "
+    r"energy in simulators crossing more than the cell largest (\S+) \((\d+) cells "
+    r"above (\S+)\)")
+
+
+def step_criteria(text):
+    """The gas's step criteria of each write in a solver log's text
+    (gasCloud's "Gas step criteria since the last write" line): per write
+    (largest deltaT/tau, cells above 1, largest cell transit, cells above
+    1, largest share of a cell's kinetic energy in simulators crossing
+    more than the cell, cells above the share's limit, that limit)."""
+    return [tuple(float(v) for v in row) for row in _STEP_CRITERIA.findall(text)]
+
+
 _EXECUTION_TIME = re.compile(r"ExecutionTime = ([0-9.eE+-]+) s")
 
 
