@@ -51,7 +51,8 @@ def main(argv=None):
                              gridspec_kw={"height_ratios": [4.4, 2.6]})
     rng = np.random.default_rng(1)
     art = None
-    for ax, t in zip(axes[0], pick):
+    clouds = [psi.parcels(case, t) for t in pick]
+    for ax, t, p in zip(axes[0], pick, clouds):
         rho = psi.field(case, t, "rhoNMean", cells["n"])
         if rho is None:
             rho = psi.field(case, t, "rhoN", cells["n"])
@@ -69,7 +70,6 @@ def main(argv=None):
             art = ax.imshow(np.log10(grid), origin="lower", aspect="auto",
                             extent=(0, rmax, 0, 1e3*X_s), cmap="viridis",
                             vmin=np.log10(low), vmax=np.log10(rho.max()))
-        p = psi.parcels(case, t)
         if p is not None:
             k = np.arange(len(p["pos"]))
             if len(k) > MAX_DOTS:
@@ -83,7 +83,7 @@ def main(argv=None):
         ax.set_xlabel("r [mm]")
         ax.set_ylabel("height above the surface [mm]")
         ax.set_title(f"t = {1e6*float(t):.3g} us")
-    dots = layer_row(axes[1], case, pick, settings)
+    dots = layer_row(axes[1], pick, clouds, settings)
     if art is not None:
         fig.colorbar(art, ax=axes[0].tolist(), label="log10 gas number density [1/m^3]")
     if dots is not None:
@@ -95,14 +95,14 @@ def main(argv=None):
     print(f"scene: wrote {output} (times {' '.join(pick)})")
 
 
-def layer_row(axes, case, pick, settings):
-    """The dust layer magnified: every parcel at (r, height) coloured by its
-    speed, one colour scale over the times (faster than its top: its top
-    colour); the initial layer top dotted.
+def layer_row(axes, pick, clouds, settings):
+    """The dust layer magnified: every parcel of clouds (psi.parcels of
+    the times pick) at (r, height) coloured by its speed, one colour scale
+    over the times (faster than its top: its top colour); the initial
+    layer top dotted.
     Returns the last scatter (for the colour bar), None without parcels."""
     X_s = settings["surface"]
     H = X_s - settings["layerTop"]
-    clouds = [psi.parcels(case, t) for t in pick]
     speeds = [None if p is None else np.linalg.norm(p["U"], axis=1) for p in clouds]
     every = np.concatenate([s for s in speeds if s is not None] + [np.zeros(1)])
     # the scale's top at the 99.5th percentile: a few fast ejecta would
