@@ -107,17 +107,20 @@ def solve(case, np_=1):
 NARROW_CELLS = 5                    # of the tutorial's 15 per side
 
 
-def narrow(build=BUILD):
+def narrow(build=BUILD, name="narrow", entries=None):
     """The tutorial at its parcel weight in a narrow column (module
-    docstring); returns (all passed, summary) of rmf.snider.check with
-    the averaged cell bound (a layer holds too few parcels for the layer
-    bound: rmf.snider)."""
-    case, _ = snider.narrow_column(os.path.join(build, "narrow"), NARROW_CELLS)
+    docstring), with the grainsProperties entries {entry: value} changed;
+    returns (all passed, summary) of rmf.snider.check with the averaged
+    cell bound (a layer holds too few parcels for the layer bound:
+    rmf.snider) and the case."""
+    case, _ = snider.narrow_column(os.path.join(build, name), NARROW_CELLS)
+    for entry, value in (entries or {}).items():
+        foam.set_entry(case, PROPS, entry, value)
     foam.run(case, "blockMesh")
     foam.run(case, "rarefiedMultiphaseInitialise")
     seconds = solve(case)
-    print(f"-- narrow: {case} ({seconds:.0f} s)")
-    return snider.check(case, "0.6", cell_bound=True, layer_bound=False)
+    print(f"-- {name}: {case} ({seconds:.0f} s)")
+    return snider.check(case, "0.6", cell_bound=True, layer_bound=False) + (case,)
 
 
 def variants(mppic, full=False, build=BUILD):

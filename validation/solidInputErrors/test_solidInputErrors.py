@@ -73,6 +73,7 @@ CLOUD_CASES = [
     ("averaging", "solution/averagingMethod", "triple", "dual"),
     ("packingRestitution", "subModels/twoSidedCoeffs/e", "1.5", "[0, 1]"),
     ("packingRelief", "subModels/twoSidedCoeffs/relief", "2", "[0, 1]"),
+    ("packingSmoothing", "subModels/twoSidedCoeffs/smoothing", "-0.5", "[0, 1]"),
     ("packingAlphaMin", "subModels/twoSidedCoeffs/alphaMin", "0", "(0, 1)"),
     ("tracking", "tracking", "straight", "cartesian"),
 ]

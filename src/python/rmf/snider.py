@@ -191,6 +191,18 @@ def face_layers_max(case, times):
                default=float("nan"))
 
 
+def quarter_layers(case, time, first=2, last=15):
+    """alpha of the parcels on the four quarter-layer slabs of a cell
+    layer, each the mean over the layers first to last - 1 (the settled
+    bed away from the floor and the surface; uniform layers assumed):
+    how the bed's parcels sit within its cells (doc/physics.md 5.3.1)."""
+    heights, _ = layers(case)
+    dz = heights[1] - heights[0]
+    area = foam.cell_volumes(case).sum()/(len(heights)*dz)
+    edges = np.linspace(first*dz, last*dz, 4*(last - first) + 1)
+    return parcel_profile(case, time, edges, area).reshape(-1, 4).mean(axis=0)
+
+
 def averaged_max(case, time):
     """Largest cell value of the packing model's averaged alpha at time
     (None where the model wrote none)."""

@@ -12,6 +12,8 @@
 #include "syncTools.H"
 #include "restartState.H"
 #include "cloudAverages.H"
+#include "polyMeshTetDecomposition.H"
+#include "globalMeshData.H"
 
 // * * * * * * * * * * * * * * * Input checks  * * * * * * * * * * * * * * * //
 
@@ -25,7 +27,7 @@ void Foam::PackingModels::TwoSided<CloudType>::checkCoeffs
 
     inputChecks::rejectUnknown
     (
-        coeffs, {"particleStressModel", "e", "alphaMin", "relief"}
+        coeffs, {"particleStressModel", "e", "alphaMin", "relief", "smoothing"}
     );
     inputChecks::getClosed(coeffs, "e", 0, 1);
 
@@ -34,6 +36,7 @@ void Foam::PackingModels::TwoSided<CloudType>::checkCoeffs
         coeffs, "alphaMin", 0, 1, true, true, false, 1e-4
     );
     inputChecks::getClosedOrDefault(coeffs, "relief", 0, 0, 1);
+    inputChecks::getClosedOrDefault(coeffs, "smoothing", 0, 0, 1);
 }
 
 
@@ -113,6 +116,82 @@ void Foam::PackingModels::TwoSided<CloudType>::findNeighbours()
 }
 
 
+template<class CloudType>
+void Foam::PackingModels::TwoSided<CloudType>::smoothStressGradient()
+{
+    const fvMesh& mesh = this->owner().mesh();
+    tauGradCell_.setSize(mesh.nCells());
+    tauGradPoint_.setSize(mesh.nPoints());
+    tauGradCell_ = Zero;
+    tauGradPoint_ = Zero;
+    scalarField volumeCell(mesh.nCells(), 0);
+    scalarField volumePoint(mesh.nPoints(), 0);
+
+    // grad(tau) is taken at each tetrahedron's centroid (constant within
+    // it for dual averaging)
+    const barycentric centroid(0.25, 0.25, 0.25, 0.25);
+    for (label celli = 0; celli < mesh.nCells(); ++celli)
+    {
+        for
+        (
+            const tetIndices& tetIs
+          : polyMeshTetDecomposition::cellTetIndices(mesh, celli)
+        )
+        {
+            const scalar v = tetIs.tet(mesh).mag();
+            const vector vGrad =
+                v*stressAverage_->interpolateGrad(centroid, tetIs);
+            tauGradCell_[celli] += vGrad;
+            volumeCell[celli] += v;
+            for (const label pointi : tetIs.faceTriIs(mesh))
+            {
+                tauGradPoint_[pointi] += vGrad;
+                volumePoint[pointi] += v;
+            }
+        }
+    }
+
+    // Points on processor and cyclic patches: the tetrahedra of both sides
+    mesh.globalData().syncPointData
+    (
+        tauGradPoint_, plusEqOp<vector>(), mapDistribute::transform()
+    );
+    mesh.globalData().syncPointData
+    (
+        volumePoint, plusEqOp<scalar>(), mapDistribute::transform()
+    );
+    tauGradCell_ /= volumeCell;
+    tauGradPoint_ /= volumePoint;
+}
+
+
+template<class CloudType>
+Foam::vector Foam::PackingModels::TwoSided<CloudType>::stressGradient
+(
+    const barycentric& coordinates,
+    const tetIndices& tetIs
+) const
+{
+    const vector tetGrad =
+        stressAverage_->interpolateGrad(coordinates, tetIs);
+    if (smoothing_ == 0)
+    {
+        return tetGrad;
+    }
+
+    // The continuous gradient: linear in the tetrahedron between the
+    // values at its cell centre and its three points
+    const triFace tri(tetIs.faceTriIs(this->owner().mesh()));
+    const vector smoothGrad =
+        coordinates[0]*tauGradCell_[tetIs.cell()]
+      + coordinates[1]*tauGradPoint_[tri[0]]
+      + coordinates[2]*tauGradPoint_[tri[1]]
+      + coordinates[3]*tauGradPoint_[tri[2]];
+
+    return (1 - smoothing_)*tetGrad + smoothing_*smoothGrad;
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 template<class CloudType>
@@ -129,6 +208,10 @@ Foam::PackingModels::TwoSided<CloudType>::TwoSided
         this->coeffDict().template getOrDefault<scalar>("alphaMin", 1e-4)
     ),
     relief_(this->coeffDict().template getOrDefault<scalar>("relief", 0)),
+    smoothing_
+    (
+        this->coeffDict().template getOrDefault<scalar>("smoothing", 0)
+    ),
     cellLength_(cbrt(owner.mesh().V().field())),
     volumeAverage_(nullptr),
     massAverage_(nullptr),
@@ -156,6 +239,7 @@ Foam::PackingModels::TwoSided<CloudType>::TwoSided
     e_(cm.e_),
     alphaMin_(cm.alphaMin_),
     relief_(cm.relief_),
+    smoothing_(cm.smoothing_),
     cellLength_(cm.cellLength_),
     volumeAverage_(nullptr),
     massAverage_(nullptr),
@@ -163,6 +247,8 @@ Foam::PackingModels::TwoSided<CloudType>::TwoSided
     stressAverage_(nullptr),
     uStart_(nullptr),
     uEnd_(nullptr),
+    tauGradCell_(),
+    tauGradPoint_(),
     below_(cm.below_),
     above_(cm.above_),
     uCell_(),
@@ -196,6 +282,10 @@ void Foam::PackingModels::TwoSided<CloudType>::cacheFields(const bool store)
                 cloudAverages::find<scalar>(cloud, "rhoAverage"),
                 cloudAverages::find<scalar>(cloud, "uSqrAverage")
             )();
+        if (smoothing_ > 0)
+        {
+            smoothStressGradient();
+        }
 
         if (!uStart_.valid())
         {
@@ -275,8 +365,7 @@ Foam::vector Foam::PackingModels::TwoSided<CloudType>::velocityCorrection
 
     const scalar alpha =
         max(volumeAverage_->interpolate(p.coordinates(), tetIs), alphaMin_);
-    const vector tauGrad =
-        stressAverage_->interpolateGrad(p.coordinates(), tetIs);
+    const vector tauGrad = stressGradient(p.coordinates(), tetIs);
     const vector uMean =
         started_
       ? uStart_->interpolate(p.coordinates(), tetIs)
