@@ -180,13 +180,19 @@ def profile(case, time, heights, index):
     return sums/counts, float(alpha.max())
 
 
+def column_area(case, heights):
+    """The column's horizontal area: its volume over the height of its
+    layers (uniform layers assumed)."""
+    return foam.cell_volumes(case).sum()/(len(heights)*(heights[1] - heights[0]))
+
+
 def face_layers_max(case, times):
     """Largest alpha over times of the parcels (parcel_profile) on slabs
     of a layer's height centred on the faces between layers, i.e. between
     neighbouring layer centres: what the layers would show if the cells
     were shifted by half a layer (uniform layers assumed)."""
     heights, _ = layers(case)
-    area = foam.cell_volumes(case).sum()/(len(heights)*(heights[1] - heights[0]))
+    area = column_area(case, heights)
     return max((float(parcel_profile(case, t, heights, area).max()) for t in times),
                default=float("nan"))
 
@@ -198,9 +204,9 @@ def quarter_layers(case, time, first=2, last=15):
     how the bed's parcels sit within its cells (doc/physics.md 5.3.1)."""
     heights, _ = layers(case)
     dz = heights[1] - heights[0]
-    area = foam.cell_volumes(case).sum()/(len(heights)*dz)
     edges = np.linspace(first*dz, last*dz, 4*(last - first) + 1)
-    return parcel_profile(case, time, edges, area).reshape(-1, 4).mean(axis=0)
+    return parcel_profile(case, time, edges, column_area(case, heights)
+                          ).reshape(-1, 4).mean(axis=0)
 
 
 def averaged_max(case, time):
