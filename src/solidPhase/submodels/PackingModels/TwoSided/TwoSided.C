@@ -27,7 +27,11 @@ void Foam::PackingModels::TwoSided<CloudType>::checkCoeffs
 
     inputChecks::rejectUnknown
     (
-        coeffs, {"particleStressModel", "e", "alphaMin", "relief", "smoothing"}
+        coeffs,
+        {
+            "particleStressModel", "e", "alphaMin", "relief", "smoothing",
+            "packedCells"
+        }
     );
     inputChecks::getClosed(coeffs, "e", 0, 1);
 
@@ -37,6 +41,7 @@ void Foam::PackingModels::TwoSided<CloudType>::checkCoeffs
     );
     inputChecks::getClosedOrDefault(coeffs, "relief", 0, 0, 1);
     inputChecks::getClosedOrDefault(coeffs, "smoothing", 0, 0, 1);
+    inputChecks::getBoolOrDefault(coeffs, "packedCells", false);
 }
 
 
@@ -212,6 +217,10 @@ Foam::PackingModels::TwoSided<CloudType>::TwoSided
     (
         this->coeffDict().template getOrDefault<scalar>("smoothing", 0)
     ),
+    packedCells_
+    (
+        inputChecks::getBoolOrDefault(this->coeffDict(), "packedCells", false)
+    ),
     cellLength_(cbrt(owner.mesh().V().field())),
     volumeAverage_(nullptr),
     massAverage_(nullptr),
@@ -240,6 +249,7 @@ Foam::PackingModels::TwoSided<CloudType>::TwoSided
     alphaMin_(cm.alphaMin_),
     relief_(cm.relief_),
     smoothing_(cm.smoothing_),
+    packedCells_(cm.packedCells_),
     cellLength_(cm.cellLength_),
     volumeAverage_(nullptr),
     massAverage_(nullptr),
@@ -318,6 +328,12 @@ void Foam::PackingModels::TwoSided<CloudType>::cacheFields(const bool store)
             started_ ? uStart_->primitiveField() : uAverage_->primitiveField();
         uNbr_.setSize(mesh.nBoundaryFaces());
         syncTools::swapBoundaryCellList(mesh, uCell_, uNbr_);
+        if (packedCells_)
+        {
+            alphaCell_ = volumeAverage_->primitiveField();
+            alphaNbr_.setSize(mesh.nBoundaryFaces());
+            syncTools::swapBoundaryCellList(mesh, alphaCell_, alphaNbr_);
+        }
 
         if (mesh.time().writeTime())
         {
@@ -375,15 +391,20 @@ Foam::vector Foam::PackingModels::TwoSided<CloudType>::velocityCorrection
     // the stress counts as infinitely stiff: the limits alone apply) and
     // the slip reflected about the mean (eqs. 39-41)
     const scalar alphaPacked = this->particleStressModel_->alphaPacked();
-    const bool stiff = alpha >= alphaPacked;
     const vector dU = -deltaT*tauGrad/(p.rho()*alpha);
     const vector reflected = (1 + e_)*(uMean - p.U());
+
+    // packedCells: the cell's averaged alpha counts as well as the
+    // parcel's
+    const scalar alphaPack =
+        packedCells_ ? max(alpha, alphaCell_[p.cell()]) : alpha;
+    const bool stiff = alphaPack >= alphaPacked;
 
     // Over-packed: the speed that takes the share relief of the cell's
     // excess out in one step
     const scalar uRelief =
-        alpha > alphaPacked
-      ? relief_*(1 - alphaPacked/alpha)*cellLength_[p.cell()]/deltaT
+        alphaPack > alphaPacked
+      ? relief_*(1 - alphaPacked/alphaPack)*cellLength_[p.cell()]/deltaT
       : 0;
 
     vector uCorr(Zero);
@@ -394,22 +415,30 @@ Foam::vector Foam::PackingModels::TwoSided<CloudType>::velocityCorrection
         // never drive it) plus the relief, or by the reflected slip
         const bool up = tauGrad[i] <= 0;
         const label n = (up ? below_ : above_)[i][p.cell()];
-        const scalar uSide =
-            n >= 0 ? uCell_[n][i]
-          : n == wall ? scalar(0)
-          : uNbr_[coupled(n)][i];
+        const scalar uSide = onSide(n, uCell_, vector::zero, uNbr_)[i];
+
+        // packedCells: a packed cell on the stressed side stops the
+        // parcel as if it were packed itself
+        const bool stiffSide =
+            stiff
+         || (
+                packedCells_
+             && onSide(n, alphaCell_, scalar(0), alphaNbr_) >= alphaPacked
+            );
 
         if (up)
         {
             const scalar stopped = min(uSide, scalar(0)) + uRelief - p.U()[i];
             const scalar limit = max(reflected[i], stopped);
-            uCorr[i] = max(scalar(0), stiff ? limit : min(dU[i], limit));
+            uCorr[i] =
+                max(scalar(0), stiffSide ? limit : min(dU[i], limit));
         }
         else
         {
             const scalar stopped = max(uSide, scalar(0)) - uRelief - p.U()[i];
             const scalar limit = min(reflected[i], stopped);
-            uCorr[i] = min(scalar(0), stiff ? limit : max(dU[i], limit));
+            uCorr[i] =
+                min(scalar(0), stiffSide ? limit : max(dU[i], limit));
         }
     }
 
