@@ -29,7 +29,8 @@ weight (same alpha0); --full: the tutorial as it is (162 232 parcels).
 narrow(): the over-packing bounds at the tutorial's parcel weight in
 ./Alltest: a column of 5 x 5 of the tutorial's cells (0.046 m square)
 holding a ninth of its parcels (18 026 x 749), to 0.6 s, serial; the
-tests run it also with twoSided's smoothing 1 (doc/physics.md 5.3.1).
+tests run it also with twoSided's smoothing 1 and without its
+packedCells (doc/physics.md 5.3.1).
 The two single-rank runs go side by side on the machine's 2 cores, then
 the parallel one.
 """
