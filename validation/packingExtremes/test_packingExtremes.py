@@ -123,9 +123,10 @@ def test_long_steps(scale):
     write, none lost; the settled bed and the cell bound of the Snider
     checks (rmf.snider: bed 0.60 +- 0.02, averaged alpha at most 0.68)
     are checked at 1 ms and printed at the long steps, where they are
-    what the long step costs (measured: travel 0.31, 3.85 and 20.7; at
-    10 ms the bed's mean still 0.607 but single cells' averaged alpha
-    2.6 and the interface 48 mm wide, at 50 ms 0.622, 3.2 and 105 mm)."""
+    what the long step costs (measured with packedCells, 2026-12-05:
+    travel 0.31, 4.12 and 19.8; at 10 ms the bed's mean 0.556, single
+    cells' averaged alpha 2.9, a layer at 0.37 left above 0.16 m and the
+    interface 95 mm wide, at 50 ms 0.604, 3.8 and 129 mm)."""
     dt = 1e-3*scale
     case, _ = snider.narrow_column(os.path.join(BUILD, f"dt{scale}"), CELLS)
     foam.set_entry(case, "system/controlDict", "deltaT", f"{dt:g}")
