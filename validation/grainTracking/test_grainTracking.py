@@ -6,15 +6,14 @@ follows upstream's barycentric tracking to round-off.
 A reduced copy of the Snider sedimentation set-up (20 000 parcels, MPPIC
 as the tutorial has it: twoSided packing, relaxation damping, walls
 rebounding with e = 0.85; but no isotropy model and packedCells false,
-see below) falls for
-STEPS = 40 steps of
-1 ms from one initial state, once with tracking barycentric (upstream's
-tet tracking everywhere) and once with cartesian (every cell of the
-column is a blockMesh box), serially and on 2 METIS ranks (parcels cross
-the processor boundary as they fall), written with 17 digits.  In that
-time free fall would be 7.8 mm; the parcels fall 5.9 mm on average (the
-bed forming at the floor holds those below), 15 882 of the 20 000 into
-another of the 9.2 mm cells, and those at the floor rebound off it.
+see below) falls for STEPS = 40 steps of 1 ms from one initial state,
+once with tracking barycentric (upstream's tet tracking everywhere) and
+once with cartesian (every cell of the column is a blockMesh box),
+serially and on 2 METIS ranks (parcels cross the processor boundary as
+they fall), written with 17 digits.  In that time free fall would be
+7.8 mm; the parcels fall 5.9 mm on average (the bed forming at the floor
+holds those below), 15 882 of the 20 000 into another of the 9.2 mm
+cells, and those at the floor rebound off it.
 
 Expected: the same parcels (matched by origProcId, origId, since the
 cloud re-orders its parcels) in the same cells, at positions and with
