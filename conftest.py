@@ -1,7 +1,7 @@
 # rarefiedMultiphaseFoam. Copyright (C) 2026 The rarefiedMultiphaseFoam authors
 # SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
 """pytest configuration for ./Alltest: project helpers and test support on
-sys.path, --long."""
+sys.path, --long, --seed-set (testing/README.md)."""
 
 import os
 import sys
@@ -14,9 +14,14 @@ sys.path.insert(0, os.path.join(HERE, "testing"))           # test support (test
 def pytest_addoption(parser):
     parser.addoption("--long", action="store_true",
                      help="also run the long checks (full-size tutorials)")
+    parser.addoption("--seed-set", type=int, default=None,
+                     help="run the statistical tests with seed set N (0: the "
+                          "default seeds; testing/README.md)")
 
 
 def pytest_configure(config):
+    if config.getoption("--seed-set") is not None:
+        os.environ["RMF_SEED_SET"] = str(config.getoption("--seed-set"))
     config.addinivalue_line("markers", "long: long run, only with --long")
 
 

@@ -4,8 +4,12 @@
 and validation/ (on sys.path through the top-level conftest.py): helpers
 that assert or make bad input, which have no place in the rmf package."""
 
+import math
+import os
 import re
 import subprocess
+
+from scipy import stats as _stats
 
 
 def run_failing(case, app):
@@ -42,3 +46,57 @@ def set_in_list(path, list_keyword, block, keyword, value):
         new = body + f" {keyword} {value}; "
     with open(path, "w") as f:
         f.write(text[:found.end()] + new + text[end:])
+
+
+# ---------------------------------------------------------------------------
+# Seeds and the suite's false-alarm budget (testing/README.md)
+
+#: The suite's family-wise false-alarm budget: the probability that a
+#: correct build fails any statistical check of ./Alltest when every seed
+#: changes (./Alltest --seed-set N) is at most SUITE_ALPHA.
+SUITE_ALPHA = 0.01
+
+#: Test modules that may spend from it, at most (testing/README.md lists
+#: them); each gets MODULE_ALPHA, its own family-wise error, which it
+#: shares among its comparisons (Bonferroni) and states in its docstring.
+MODULES = 40
+MODULE_ALPHA = SUITE_ALPHA/MODULES
+
+
+def seed_set():
+    """Which set of seeds the suite runs with: 0 (the default, the seeds
+    the figures in the docstrings were measured with) or N from
+    ./Alltest --seed-set N (environment RMF_SEED_SET)."""
+    return int(os.environ.get("RMF_SEED_SET", "0"))
+
+
+def seed(k, span=1000):
+    """Seed k of the current seed set: k itself in set 0, k + span*N in set
+    N (span larger than any seed a test uses, so sets never overlap)."""
+    return k + span*seed_set()
+
+
+def z_limit(m=1, alpha=MODULE_ALPHA, two_sided=True):
+    """Normal quantile for one of m comparisons sharing alpha
+    (Bonferroni): |z| above it has probability alpha/m under the null."""
+    a = alpha/m
+    return _stats.norm.isf(a/2 if two_sided else a)
+
+
+def t_limit(dof, m=1, alpha=MODULE_ALPHA, two_sided=True):
+    """Student's t quantile with dof degrees of freedom for one of m
+    comparisons sharing alpha (Bonferroni)."""
+    a = alpha/m
+    return _stats.t.isf(a/2 if two_sided else a, dof)
+
+
+def poisson_limits(mean, m=1, alpha=MODULE_ALPHA):
+    """Two-sided acceptance range [lo, hi] of a Poisson count of the given
+    mean, one of m comparisons sharing alpha (Bonferroni)."""
+    a = alpha/m
+    return (_stats.poisson.ppf(a/2, mean), _stats.poisson.isf(a/2, mean))
+
+
+def binomial_sigma(n, p):
+    """Standard deviation of a binomial count of n trials at probability p."""
+    return math.sqrt(n*p*(1 - p))
