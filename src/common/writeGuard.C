@@ -9,8 +9,10 @@
 #include "OFstream.H"
 #include "IFstream.H"
 #include "Pstream.H"
+#include "regIOobject.H"
 
 #include <csignal>
+#include <cstdlib>
 #include <cstring>
 #include <unistd.h>
 
@@ -37,6 +39,37 @@ fileName marker(const fileName& timePath)
 {
     return timePath/"uniform"/"writing";
 }
+
+
+// The test hook's object (writeGuard.H): writing it kills the process
+class killWhileWriting
+:
+    public regIOobject
+{
+public:
+
+    explicit killWhileWriting(const IOobject& io)
+    :
+        regIOobject(io)
+    {}
+
+    bool writeData(Ostream&) const
+    {
+        return true;
+    }
+
+    bool writeObject
+    (
+        IOstream::streamFormat,
+        IOstream::versionNumber,
+        IOstream::compressionType,
+        const bool
+    ) const
+    {
+        std::raise(SIGKILL);
+        return false;
+    }
+};
 
 } // End anonymous namespace
 
@@ -105,6 +138,28 @@ void Foam::writeGuard::begin(const Time& runTime)
     const fileName path(marker(runTime.timePath()));
     mkDir(path.path());
     OFstream(path)() << "being written" << nl;
+
+    const char* killAt = std::getenv("RMF_TEST_KILL_WHILE_WRITING");
+    if (killAt && runTime.timeName() == killAt)
+    {
+        regIOobject::store
+        (
+            new killWhileWriting
+            (
+                IOobject
+                (
+                    "writeGuardKillWhileWriting",
+                    runTime.timeName(),
+                    runTime,
+                    IOobject::NO_READ,
+                    IOobject::AUTO_WRITE
+                )
+            )
+        );
+        Info<< "--> writeGuard: test hook RMF_TEST_KILL_WHILE_WRITING: the"
+            << " process kills itself while writing time "
+            << runTime.timeName() << endl;
+    }
 
     std::snprintf
     (

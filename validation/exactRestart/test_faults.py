@@ -5,14 +5,19 @@
 The gas case of test_exactRestart (dsmcFoam's freeSpacePeriodic, own
 stream, writeFormat binary, about 40 000 simulators) is run to N steps;
 then a second run to 2N steps is broken while it writes time 2N:
-- killed: SIGKILL as soon as its write marker <2N>/uniform/writing
-  appears (the step that writes 2N has begun; the test polls for it);
+- killed: the run kills itself with SIGKILL in the middle of writing 2N,
+  through writeGuard's test hook (environment variable
+  RMF_TEST_KILL_WHILE_WRITING=<2N>, writeGuard.H): after the marker
+  <2N>/uniform/writing, uniform/time and some of the time's objects are
+  written, before the rest (no race with a signal from outside);
 - file-size limit: the run gets RLIMIT_FSIZE (ulimit -f) of 200 kB, less
   than its simulator files (about 1 MB each), so a write of time 2N
   exceeds it.
 Expected, each checked:
-- the broken run leaves <2N> marked; with the limit it exits with code 1
-  and says "file size limit exceeded ... writing time <2N>" (no signal);
+- the broken run leaves <2N> marked; killed, it exits by SIGKILL having
+  written part of <2N> (uniform/time and fewer files than the
+  uninterrupted run); with the limit it exits with code 1 and says "file
+  size limit exceeded ... writing time <2N>" (no signal);
 - time N is untouched (byte for byte as before the broken run);
 - the restart (startFrom latestTime) reports the time directory set
   aside, renames it <2N>.incomplete, starts from N, and its <2N> is byte
@@ -85,17 +90,21 @@ def test_killed_while_writing(cases):
     case = foam.copy_case(base, os.path.join(BUILD, "killed"))
     t_mid, t_end = foam.times(whole)[-2:]
     before = _files(case, t_mid)
-    marker = os.path.join(case, t_end, "uniform", "writing")
+    env = dict(os.environ, RMF_TEST_KILL_WHILE_WRITING=t_end)
     with open(os.path.join(case, "log.killed"), "w") as log:
-        proc = subprocess.Popen(["rarefiedMultiphaseFoam"], cwd=case, stdout=log,
-                                stderr=subprocess.STDOUT)
-        while proc.poll() is None and not os.path.exists(marker):
-            pass
-        assert proc.poll() is None, "the run ended before the test could kill it"
-        proc.send_signal(signal.SIGKILL)
-        proc.wait()
-    print(f"\nkilled while writing {t_end} (exit {proc.returncode})")
+        proc = subprocess.run(["rarefiedMultiphaseFoam"], cwd=case, stdout=log,
+                              stderr=subprocess.STDOUT, env=env)
+    with open(os.path.join(case, "log.killed")) as f:
+        assert "kills itself while writing time " + t_end in f.read(), "hook not armed"
+    # Killed in the middle of the write: beside the marker, Time's
+    # uniform/time (written first) is there, some of the rest is not
+    written = set(_files(case, t_end)) - {os.path.join(t_end, "uniform", "writing")}
+    complete = set(_files(whole, t_end))
+    print(f"\nkilled while writing {t_end} (exit {proc.returncode}): {len(written)} of"
+          f" {len(complete)} files written")
     assert proc.returncode == -signal.SIGKILL
+    assert os.path.join(t_end, "uniform", "time") in written
+    assert written < complete, "not a part of the uninterrupted run's files"
     assert _files(case, t_mid) == before, f"time {t_mid} changed"
     _check_recovery(case, whole, t_mid, t_end)
 
