@@ -110,3 +110,90 @@ def batch_deviation(samples, expected):
     mean = samples.mean(axis=0)
     se = samples.std(axis=0, ddof=1)/np.sqrt(len(samples))
     return mean, se, (mean - expected)/se
+
+
+def weighting_events(max_weight, extent, radius, dt, temperature, mass,
+                     open_outer=False, samples=1000000, rng_seed=1):
+    """Expected radial-weighting events (clones + deletions) per step of an
+    equilibrium gas at rest in the wedge, computed from the flux of
+    molecules between radii, not from the code's counts: (per simulator
+    present, per simulator inserted at the outer radius when open).
+
+    Each step every simulator moves on its 3-D straight path (the wedge's
+    chord move reaches the same radius) from r0 to r1 and is decided with
+    ratio = RWF(r0)/RWF(r1): kept with probability ratio below 1, else
+    floor(ratio) copies and one more with the fractional part's
+    probability; the expected events are |ratio - 1| either way (doc/
+    physics.md 6).  Simulators sit at density n/(F_N RWF(r)) in the wedge
+    (volume element ~ r dr), velocities Maxwellian at temperature.  The
+    outer wall (radius: the flat outer face's distance from the axis) re-
+    emits diffusely for the rest of the step; open, a simulator crossing it
+    leaves undecided, and one inserted there (weight 1, inward velocity
+    from the flux distribution, over a random fraction of the step as
+    randomEntryTime) is kept with probability 1/RWF(r1).  The x walls are
+    left out: a simulator meeting one (2 % per step) has its radial
+    velocity redrawn from the same distribution (at most 0.6 % of the
+    events).  Monte Carlo with a fixed generator of its own: relative
+    standard error 0.15 % at the default samples (spread over generator
+    seeds), the closed weighted wedge's 0.0370 per simulator and step, the
+    open one's 0.0368 and 0.898 per inserted simulator; measured against
+    the code's counts -0.11 % and -0.26 % (validation/axisymmetricGas)."""
+    rng = np.random.default_rng(rng_seed)
+    sigma = math.sqrt(K_B * temperature / mass)
+
+    # Radii of the simulators present: r ~ r dr, kept with 1/RWF
+    r0 = radius * np.sqrt(rng.random(4 * samples))
+    r0 = r0[rng.random(len(r0)) < 1 / rwf(r0, max_weight, extent)][:samples]
+    pos = np.column_stack([r0, np.zeros_like(r0)])
+    vel = rng.normal(0, sigma, (len(r0), 2))        # radial, azimuthal
+    end, inside = _flight(pos, vel, dt, radius, sigma, rng, open_outer)
+    ratio = rwf(r0, max_weight, extent) / rwf(np.hypot(*end.T), max_weight, extent)
+    present = np.where(inside, abs(ratio - 1), 0).mean()
+    if not open_outer:
+        return present, 0.0
+
+    # Inserted at the outer radius: inward speed from the flux (Rayleigh)
+    n = samples
+    pos = np.column_stack([np.full(n, radius), np.zeros(n)])
+    vel = np.column_stack([-sigma * np.sqrt(-2 * np.log(1 - rng.random(n))),
+                           rng.normal(0, sigma, n)])
+    end, inside = _flight(pos, vel, dt * rng.random(n), radius, sigma, rng, open_outer)
+    inserted = np.where(inside, 1 - 1 / rwf(np.hypot(*end.T), max_weight, extent), 0).mean()
+    return present, inserted
+
+
+def _flight(pos, vel, dt, radius, sigma, rng, open_outer):
+    """Straight flight in the wedge's cross-section (y, z) over dt (scalar
+    or per member) inside the cylinder of the given radius: (end points,
+    still inside).  At the cylinder a member leaves (open) or is re-emitted
+    diffusely (wall: inward normal speed from the flux distribution,
+    tangential Maxwellian, of spread sigma) for the rest of the flight."""
+    left = np.broadcast_to(np.asarray(dt, float), len(pos)).copy()
+    inside = np.ones(len(pos), bool)
+    active = np.ones(len(pos), bool)
+    for _ in range(10):
+        end = pos + vel * left[:, None]
+        out = active & (np.hypot(*end.T) > radius)
+        pos = np.where((active & ~out)[:, None], end, pos)
+        active = out
+        if not active.any():
+            break
+        if open_outer:
+            inside[out] = False
+            break
+        # time to the cylinder: |p + v t| = radius
+        p, v = pos[out], vel[out]
+        a = (v * v).sum(axis=1)
+        b = (p * v).sum(axis=1)
+        c = (p * p).sum(axis=1) - radius ** 2
+        t = (-b + np.sqrt(np.maximum(b * b - a * c, 0))) / a
+        hit = p + v * t[:, None]
+        normal = -hit / radius                      # inward
+        tangent = np.column_stack([-normal[:, 1], normal[:, 0]])
+        k = len(hit)
+        speed_n = sigma * np.sqrt(-2 * np.log(1 - rng.random(k)))
+        speed_t = rng.normal(0, sigma, k)
+        pos[out] = hit
+        vel[out] = normal * speed_n[:, None] + tangent * speed_t[:, None]
+        left[out] -= t
+    return pos, inside
