@@ -3,9 +3,19 @@
 """Bad solid-phase input stops the initialiser and the
 solver with a FatalIOError naming the file, the keyword, the bad value and
 the valid range or choices (end to end, on a copy of the Snider tutorial's
-set-up, with a small parcel count so that the good case starts at once)."""
+set-up, with a small parcel count so that the good case starts at once).
+
+Each expected text is matched whole (expect): keywords as the message
+quotes them ('e'), the bad value on the message's "value:" line
+(value: 0), the valid range or choice on its "valid:" line, and a text
+that begins or ends with a letter or digit only where no letter, digit
+or '-' continues it (nor a '.' that continues a number), so that an
+expected e, d, 0 or 1 is not found inside another word or number.
+
+Deterministic: no statistical comparison."""
 
 import os
+import re
 import subprocess
 
 import pytest
@@ -44,9 +54,30 @@ def with_entry(meshed, name, dict_path, entry, value, remove=None):
     return case
 
 
-def expect(out, *texts):
+def whole(text, out):
+    """text in out, not inside another word or number (module docstring)."""
+    before = r"(?<![\w-])(?<!\d\.)" if re.match(r"\w", text) else ""
+    after = r"(?!\w|\.\d)" if re.search(r"\w$", text) else ""
+    return re.search(before + re.escape(text) + after, out) is not None
+
+
+def expect(out, *texts, valid=None):
+    """Each of texts in out whole, and valid on a "valid:" line."""
     for text in ("FOAM FATAL IO ERROR",) + texts:
-        assert text in out, text
+        assert whole(text, out), text
+    if valid is not None:
+        lines = re.findall(r"(?m)^\s*valid: (.*)$", out)
+        assert any(whole(valid, line) for line in lines), f"valid: ... {valid}"
+
+
+def quoted(keyword):
+    return f"'{keyword}'"
+
+
+def named(keyword, value):
+    """The keyword and the bad value as a FatalIOError of inputChecks
+    names them."""
+    return quoted(keyword), f"value: {value}"
 
 
 # Cloud dictionary: both programs check it before anything is read.
@@ -87,7 +118,7 @@ def test_bad_cloud_entry(meshed, app, name, entry, value, valid):
     case = with_entry(meshed, name, PROPS, entry, value)
     keyword = entry.split("/")[-1]
     out = run_failing(case, app)
-    expect(out, PROPS, keyword, value.lstrip("-") if keyword == "type" else value, valid)
+    expect(out, PROPS, *named(keyword, value), valid=valid)
 
 
 # NTCHardSphere collisions (selected first): both programs check the
@@ -110,15 +141,15 @@ def test_bad_collision_entry(meshed, app, name, keyword, value, valid):
     foam.set_entry(case, PROPS, "subModels/stochasticCollisionModel",
                    "NTCHardSphere")
     out = run_failing(case, app)
-    expect(out, PROPS, "NTCHardSphereCoeffs", keyword, value, valid)
+    expect(out, PROPS, "NTCHardSphereCoeffs", *named(keyword, value), valid=valid)
 
 
 def test_collision_model_name(meshed):
     case = with_entry(meshed, "ntcName", PROPS,
                       "subModels/stochasticCollisionModel", "NTCHardSpheres")
     out = run_failing(case, "rarefiedMultiphaseFoam")
-    expect(out, PROPS, "stochasticCollisionModel", "NTCHardSpheres",
-           "NTCHardSphere")
+    expect(out, PROPS, *named("stochasticCollisionModel", "NTCHardSpheres"),
+           valid="NTCHardSphere")
 
 
 def test_collisionless_needs_cartesian_contacts(meshed):
@@ -136,7 +167,7 @@ def test_collisionless_needs_cartesian_contacts(meshed):
             "        startTime 0; anchoringDepth 4; erosionHeight 1;\n"
             "        collisionless true;\n    }\n}", 1))
     out = run_failing(case, "rarefiedMultiphaseFoam")
-    expect(out, PROPS, "collisionless", "true", "cartesianContacts")
+    expect(out, PROPS, *named("collisionless", "true"), valid="cartesianContacts")
 
 
 def test_drag_force_beside_coupling(meshed):
@@ -165,7 +196,7 @@ def test_bad_initialisation(meshed, name, entry, value, valid, remove):
     case = with_entry(meshed, name, INIT, REGION + entry, value,
                       remove=REGION + remove if remove else None)
     out = run_failing(case, "rarefiedMultiphaseInitialise")
-    expect(out, INIT, entry, value, valid)
+    expect(out, INIT, *named(entry, value), valid=valid)
 
 
 def test_region_outside_mesh(meshed):
@@ -229,4 +260,4 @@ def test_cloud_random_seed_range(meshed):
     (randomStreams.H)."""
     case = with_entry(meshed, "cloudSeed", PROPS, "randomSeed", "5000")
     out = run_failing(case, "rarefiedMultiphaseFoam")
-    expect(out, PROPS, "randomSeed", "5000", "[0, 2000]")
+    expect(out, PROPS, *named("randomSeed", "5000"), valid="[0, 2000]")
