@@ -29,9 +29,28 @@ dictionary settings(const fvMesh& mesh)
     );
     inputChecks::rejectUnknown
     (
-        dict, {"cellCost", "maxImbalance", "candidateCost"}
+        dict, {"cellCost", "maxImbalance", "candidateCost", "measure"}
     );
     return dict;
+}
+
+
+// Whether the cost is the counted work (measure work) instead of CPU time
+bool countsWork(const fvMesh& mesh)
+{
+    return
+        inputChecks::getChoiceOrDefault
+        (
+            settings(mesh), "measure", "cpuTime", {"cpuTime", "work"}
+        ) == "work";
+}
+
+
+// The cost fields' unit: seconds of CPU time, or counted work (in
+// simulator moves) without a unit
+dimensionSet costDimensions(const bool work)
+{
+    return work ? dimless : dimTime;
 }
 
 } // End anonymous namespace
@@ -77,6 +96,7 @@ Foam::loadBalance::loadBalance(const fvMesh& mesh)
             0.2
         )
     ),
+    countWork_(countsWork(mesh)),
     cost_(),
     resetCost_(false),
     computed_(Zero),
@@ -106,13 +126,13 @@ Foam::loadBalance::loadBalance(const fvMesh& mesh)
                         IOobject::AUTO_WRITE
                     ),
                     mesh,
-                    dimensionedScalar(dimTime, Zero)
+                    dimensionedScalar(costDimensions(countWork_), Zero)
                 )
             );
         }
     }
 
-    if (Pstream::parRun())
+    if (Pstream::parRun() && !countWork_)
     {
         profilingPstream::enable();
     }
@@ -157,7 +177,12 @@ void Foam::loadBalance::writeInitial(const fvMesh& mesh)
         {
             volScalarField
             (
-                io, mesh, dimensionedScalar("uniform", dimTime, 1.0)
+                io,
+                mesh,
+                dimensionedScalar
+                (
+                    "uniform", costDimensions(countsWork(mesh)), 1.0
+                )
             ).write();
         }
     }
@@ -186,8 +211,19 @@ void Foam::loadBalance::begin(const phase which)
 }
 
 
-Foam::scalar Foam::loadBalance::spent(const phase which, const scalar timed)
+Foam::scalar Foam::loadBalance::spent
+(
+    const phase which,
+    const scalar timed,
+    const scalar work
+)
 {
+    if (countWork_)
+    {
+        computed_[which] += work;
+        return work;
+    }
+
     const scalar comm = communication() - commStart_;
     const scalar spent = cpuSeconds() - cpuStart_ - comm;
     computed_[which] += spent;
@@ -230,14 +266,13 @@ void Foam::loadBalance::endGas
     const scalarField& candidates
 )
 {
-    const scalar rest = spent(gas, 0);
+    const scalarField C(candidateCost_*candidates);
+    const scalar total = sum(simulators) + sum(C);
+    const scalar rest = spent(gas, 0, total);
     if (cost_.empty() || rest <= 0)
     {
         return;
     }
-
-    const scalarField C(candidateCost_*candidates);
-    const scalar total = sum(simulators) + sum(C);
 
     spread(cost_[gasSimulators].primitiveFieldRef(), rest, simulators, total);
     if (total > 0)
@@ -254,13 +289,14 @@ void Foam::loadBalance::end(const phase which, const labelUList& parcels)
         which == coupling && cost_.size()
       ? sum(cost_[fieldi].primitiveField()) - costStart_
       : 0;
-    const scalar rest = spent(which, timed);
+    const scalar total = sum(parcels);
+    const scalar rest = spent(which, timed, total);
     if (cost_.empty() || rest <= 0)
     {
         return;
     }
 
-    spread(cost_[fieldi].primitiveFieldRef(), rest, parcels, sum(parcels));
+    spread(cost_[fieldi].primitiveFieldRef(), rest, parcels, total);
 }
 
 
@@ -304,14 +340,26 @@ void Foam::loadBalance::endStep()
         const Pair<scalar> commTimes(overProcessors(communicated_));
         const scalar imbalance = ratio(allPhases);
 
-        Info<< "Load balance since the last write: compute time per"
-            << " processor max/mean = " << imbalance << " (max "
-            << allPhases.first() << " s, mean " << allPhases.second()
-            << " s; gas "
-            << ratio(gasTimes) << ", coupling " << ratio(couplingTimes)
-            << ", grains " << ratio(grainTimes)
-            << "); communication and waiting max " << commTimes.first()
-            << " s, mean " << commTimes.second() << " s" << endl;
+        if (countWork_)
+        {
+            Info<< "Load balance since the last write: counted work per"
+                << " processor max/mean = " << imbalance << " (max "
+                << allPhases.first() << ", mean " << allPhases.second()
+                << " simulator moves; gas " << ratio(gasTimes)
+                << ", coupling " << ratio(couplingTimes) << ", grains "
+                << ratio(grainTimes) << ")" << endl;
+        }
+        else
+        {
+            Info<< "Load balance since the last write: compute time per"
+                << " processor max/mean = " << imbalance << " (max "
+                << allPhases.first() << " s, mean " << allPhases.second()
+                << " s; gas "
+                << ratio(gasTimes) << ", coupling " << ratio(couplingTimes)
+                << ", grains " << ratio(grainTimes)
+                << "); communication and waiting max " << commTimes.first()
+                << " s, mean " << commTimes.second() << " s" << endl;
+        }
 
         stop_ =
             imbalance > maxImbalance_
