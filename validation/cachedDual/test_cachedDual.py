@@ -21,6 +21,8 @@ instead of the caller's stops the solver at the packing model's look-up
 whose averages start from 1e-15 instead of 0 fails the identity (8 files
 differ).  The solver's time with cachedDual against dual is printed
 (information only; bench/cachedDual measures it).
+
+Deterministic: no statistical comparison.
 """
 
 import os

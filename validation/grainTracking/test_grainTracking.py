@@ -47,6 +47,8 @@ or a wall hit missed moves a parcel by up to a cell, 1e7 times the
 tolerance.  So that the comparison is not trivial, the parcels must
 have fallen 5 mm on average and (serially) more than half of them into
 another cell.
+
+Deterministic: no statistical comparison.
 """
 
 import os
