@@ -70,10 +70,14 @@ def seed_set():
     return int(os.environ.get("RMF_SEED_SET", "0"))
 
 
-def seed(k, span=1000):
-    """Seed k of the current seed set: k itself in set 0, k + span*N in set
-    N (span larger than any seed a test uses, so sets never overlap)."""
-    return k + span*seed_set()
+def seed(k, span=500):
+    """Seed k (0 <= k < span) of the current seed set: k itself in set 0,
+    k + span*N in set N, so sets never overlap.  The programs take seeds
+    from 0 to 2000 (randomSeed): sets 0 to 3."""
+    assert 0 <= k < span, f"seed {k} outside 0..{span - 1}"
+    s = k + span*seed_set()
+    assert s <= 2000, f"seed set {seed_set()} gives seed {s}: randomSeed takes 0..2000"
+    return s
 
 
 def z_limit(m=1, alpha=MODULE_ALPHA, two_sided=True):
