@@ -15,6 +15,7 @@ import os
 import shutil
 
 from rmf import foam
+from rmf_testing import seed
 
 BOX = os.path.join(foam.PROJECT_DIR, "validation", "freeMolecularCoupling", "box")
 PROPS = "constant/grainsProperties"
@@ -32,7 +33,9 @@ V_CELL = 0.1*0.08*0.08                      # [m^3]
 def copy_box(dst, species="Ar", n_gas=1e20, eps=0.0, alpha=1.0, coupling="oneWay"):
     """Fresh set-up of the box in dst (not meshed or filled): one gas
     species at number density n_gas, the grains' specular fraction eps,
-    thermal accommodation alpha and interphaseCoupling."""
+    thermal accommodation alpha and interphaseCoupling.  The box's
+    randomSeeds (the gas's, the gas's and the grains' fills) are set to
+    rmf_testing.seed(1), so that a seed set changes them."""
     case = foam.copy_setup(BOX, dst)
     shutil.rmtree(os.path.join(case, "0"))
     shutil.copytree(os.path.join(foam.dsmc_tutorial("freeSpacePeriodic"), "0"),
@@ -44,6 +47,8 @@ def copy_box(dst, species="Ar", n_gas=1e20, eps=0.0, alpha=1.0, coupling="oneWay
     foam.set_entry(case, PROPS, "constantProperties/specularFraction", eps)
     foam.set_entry(case, PROPS, "constantProperties/thermalAccommodation", alpha)
     foam.set_entry(case, PROPS, "subModels/interphaseCoupling", coupling)
+    for path in (GAS, FILL, GRAINS):
+        foam.set_entry(case, path, "randomSeed", seed(1))
     return case
 
 
