@@ -19,7 +19,7 @@ method: a batch is longer than an acoustic crossing of the radius, about
 bins, is 0.01-0.05 in the closed wedges, 0.22 (density) and 0.17 (T) in
 the open one, whose content relaxes to the free stream's over some 80
 steps (its simulators over their outflow): the standard errors are
-corrected for it (_deviation: AR(1), factor sqrt((1 + rho)/(1 - rho))
+corrected for it (uniformity.corrected_deviation: AR(1), factor sqrt((1 + rho)/(1 - rho))
 when rho > 0).  A bin fails beyond MAX_DEV standard errors (Student's t,
 17 d.o.f., Bonferroni share of the module's error), or when its standard
 error exceeds 2 % (measured: 0.2-0.8 % for the density, up to 1.8 K for
@@ -111,19 +111,6 @@ def runs():
     return out
 
 
-def _deviation(samples, expected):
-    """uf.batch_deviation with the standard error corrected for correlated
-    batches: an AR(1) correlation rho, the median over the bins of the
-    batch means' lag-1 autocorrelation, when positive, inflates the
-    variance of the mean by (1 + rho)/(1 - rho).  Returns mean, se, dev and
-    rho."""
-    mean, se, _ = uf.batch_deviation(samples, expected)
-    x = samples - mean
-    rho = float(np.median((x[1:] * x[:-1]).sum(axis=0) / (x * x).sum(axis=0)))
-    se = se * math.sqrt((1 + max(rho, 0)) / (1 - max(rho, 0)))
-    return mean, se, (mean - expected) / se, rho
-
-
 def _report(ok, what, figures):
     print(f"{'PASS' if ok else 'FAIL'} axisymmetricGas {what}: {figures}")
     return ok
@@ -136,7 +123,7 @@ def test_uniform_density(runs, name):
     radii, row_vol, dens, _ = uf.radial_batches(runs[name], SKIP)
     overall = (dens * row_vol).sum(axis=1) / row_vol.sum()
     ratio = dens / overall[:, None]
-    mean, se, dev, rho = _deviation(ratio, 1)
+    mean, se, dev, rho = uf.corrected_deviation(ratio, 1)
     figures = (f"n/n_wedge by radius {np.round(mean, 4).tolist()}, lag-1 {rho:+.2f}, "
                f"max |dev| {abs(dev).max():.2f} se (limit {MAX_DEV:.2f}), "
                f"se {se.min():.4f}-{se.max():.4f} (limit {MAX_SE})")
@@ -148,7 +135,7 @@ def test_free_stream_density(runs):
     """Open outer radius (free stream at N0): each bin at N0 within noise;
     without the inflow's 1/RWF the outer bins would hold up to 10 N0."""
     _, _, dens, _ = uf.radial_batches(runs["openWeighted"], SKIP)
-    mean, se, dev, rho = _deviation(dens, N0)
+    mean, se, dev, rho = uf.corrected_deviation(dens, N0)
     figures = (f"n/N0 by radius {np.round(mean / N0, 4).tolist()}, lag-1 {rho:+.2f}, "
                f"max |dev| {abs(dev).max():.2f} se (limit {MAX_DEV:.2f}), "
                f"relative se up to {(se / N0).max():.4f} (limit {MAX_SE})")
@@ -160,7 +147,7 @@ def test_free_stream_density(runs):
 def test_temperature(runs, name):
     """Translational temperature of each bin at the walls' 300 K within noise."""
     _, _, _, temp = uf.radial_batches(runs[name], SKIP)
-    mean, se, dev, rho = _deviation(temp, T0)
+    mean, se, dev, rho = uf.corrected_deviation(temp, T0)
     figures = (f"T by radius {np.round(mean, 1).tolist()} K, lag-1 {rho:+.2f}, "
                f"max |dev| {abs(dev).max():.2f} se (limit {MAX_DEV:.2f}), "
                f"se up to {se.max():.2f} K (limit {MAX_SE * T0:.0f} K)")
