@@ -4,9 +4,8 @@
 error against hand-worked cases, and the erosion box's --quick study
 (0.05 s of plume, one seed; about 2.5 minutes).
 
-Checks of the quick study (each able to fail):
-- the reference against itself: cost 1, every error 0 (the errors are
-  taken against the same seed's reference run);
+Checks of the quick study (each able to fail; the reference's own row,
+cost 1 and errors 0 by construction, is not checked: it could not fail):
 - contact resolution: DEM at t_c/20 stays within 10 % of the t_c/50
   reference in the erosion curve and rate (the issue's error target; a
   coarser contact step that changed the erosion by more would make the
@@ -92,10 +91,6 @@ def test_erosion_box_quick():
     ref = rows["base"]
     ok_all = report("every setting ran", sorted(rows) == sorted(names),
                     f"{len(rows)} of {len(names)}")
-    ok_ref = report("reference against itself",
-                    float(ref["cost"]) == 1 and all(float(ref[e]) == 0
-                                                    for e in ("curve", "rate", "fcn")),
-                    f"cost {ref['cost']}, errors {ref['curve']}, {ref['rate']}, {ref['fcn']}")
     s20 = rows["steps20"]
     ok_20 = report("DEM at t_c/20 within 10 % of t_c/50",
                    abs(float(s20["curve"])) < 0.1 and abs(float(s20["rate"])) < 0.1,
@@ -103,7 +98,7 @@ def test_erosion_box_quick():
     ok_ntc = report("NTC alone holds no bed",
                     float(rows["ntc"]["Ne"]) < 0.1*float(ref["Ne"]),
                     f"N_e {float(rows['ntc']['Ne']):.0f} against the DEM's {float(ref['Ne']):.0f}")
-    assert ok_all and ok_ref and ok_20 and ok_ntc
+    assert ok_all and ok_20 and ok_ntc
 
 
 def test_speed_moments():
