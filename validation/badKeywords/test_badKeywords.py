@@ -10,7 +10,14 @@ required or optional, valid range or choices).  The rows of every model
 family's case (those of validation/exactRestart, and the regolith erosion
 box for the prescribed gas, Cartesian contacts, erosion planes and
 tabulated profiles) are gathered; the test holds no keyword list of its
-own, so a keyword the code checks is a keyword the test tries.
+own, so a keyword the code checks is a keyword the test tries.  The rows
+themselves, ranges and choices included, must be those of the list
+committed beside the test (keywords.tsv, one row per family and keyword):
+a program that reports a wrong range fails there, and not only where its
+message and its list agree with each other.  A keyword added or changed
+on purpose: the listing found is written to
+build/validation/badKeywords/keywords.tsv, to be compared and copied over
+the committed one.
 
 Per row, the bad inputs of its kind:
   scalar   below the lower bound, above the upper (each when finite: the
@@ -35,7 +42,10 @@ choices.  Each case is initialised and run for 3 steps; it must either run
 (exit 0, no nan or inf in its log or in any field or parcel file it wrote)
 or stop with a FatalIOError: a signal (floating-point exception,
 segmentation fault), a FatalError that is not about input, a nan or a
-hang (60 s) fails.  CI runs FUZZ_CASES cases (seeded), --long 300.
+hang fails.  A hang is a program that writes no output for STALL seconds
+(no clock bounds a run: a slow machine only waits longer; the cases
+print every step, a few seconds apart at most).  CI runs FUZZ_CASES
+cases (seeded), --long 300.
 """
 
 import concurrent.futures
@@ -45,6 +55,7 @@ import re
 import shutil
 import subprocess
 import sys
+import tempfile
 
 import pytest
 
@@ -60,7 +71,8 @@ import test_exactRestart as families                        # noqa: E402
 EROSION_BOX = os.path.join(ROOT, "tutorials", "psi", "regolithErosionBox")
 SOLVER = "rarefiedMultiphaseFoam"
 INITIALISER = "rarefiedMultiphaseInitialise"
-TIMEOUT = 60            # s per run: the cases stop at their first step
+STALL = 300             # s without output from a program: hung
+KEYWORDS = os.path.join(HERE, "keywords.tsv")
 FUZZ_CASES = 60         # CI; --long: FUZZ_CASES_LONG
 FUZZ_CASES_LONG = 300
 # The grain families the fuzz draws from (their grain and coupling rows)
@@ -89,8 +101,9 @@ class Row:
     """One checked keyword, as a program's -listKeywords prints it."""
 
     def __init__(self, line, app, family):
+        self.line = line.rstrip("\n")
         _, name, self.keyword, self.kind, required, self.valid = \
-            line.rstrip("\n").split("\t")
+            self.line.split("\t")
         self.required = required == "required"
         self.file, _, scope = name.partition(".")
         self.scope = scope.split(".") if scope else []
@@ -111,10 +124,9 @@ class Row:
 
 
 def list_rows(case, app, family):
-    proc = subprocess.run([app, "-listKeywords"], cwd=case, capture_output=True,
-                          text=True, timeout=TIMEOUT)
-    assert proc.returncode == 0, (family, app, proc.stdout[-2000:])
-    return [Row(line, app, family) for line in proc.stdout.splitlines()
+    code, out = run_app(case, app, "-listKeywords")
+    assert code == 0, (family, app, out[-2000:])
+    return [Row(line, app, family) for line in out.splitlines()
             if line.startswith("checkedKeyword\t")]
 
 
@@ -163,6 +175,47 @@ def rows(bases):
         for r in found:
             table.setdefault(r.key, r)
     return list(table.values()), per_family
+
+
+HEADER = """\
+# rarefiedMultiphaseFoam. Copyright (C) 2026 The rarefiedMultiphaseFoam authors
+# SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
+# The keywords the programs check, per family of validation/badKeywords:
+# family, program, then the row -listKeywords prints (dictionary and scope,
+# keyword, kind, required or optional, valid range or choices), tab
+# separated.  test_badKeywords.py::test_rows_as_committed compares the
+# programs' listing with it and writes the listing it found to
+# build/validation/badKeywords/keywords.tsv.
+"""
+
+
+def _listing(per_family):
+    """Every family's rows as lines of keywords.tsv, sorted."""
+    return sorted(f"{family}\t{r.app}\t{r.line}"
+                  for family, found in per_family.items() for r in found)
+
+
+def test_rows_as_committed(rows):
+    """Every family's rows (keyword, kind, required, range or choices) are
+    those of the committed list keywords.tsv, neither more nor fewer."""
+    _, per_family = rows
+    found = _listing(per_family)
+    os.makedirs(BUILD, exist_ok=True)
+    with open(os.path.join(BUILD, "keywords.tsv"), "w") as f:
+        f.write(HEADER + "".join(line + "\n" for line in found))
+    with open(KEYWORDS) as f:
+        committed = [line.rstrip("\n") for line in f
+                     if line.strip() and not line.startswith("#")]
+    missing = sorted(set(committed) - set(found))
+    extra = sorted(set(found) - set(committed))
+    for line in missing:
+        print(f"FAIL keyword list: committed, not listed: {line!r}")
+    for line in extra:
+        print(f"FAIL keyword list: listed, not committed: {line!r}")
+    assert report("keyword list", not missing and not extra,
+                  f"{len(found)} rows of {len(per_family)} families; committed "
+                  f"rows not listed {len(missing)}, listed rows not committed "
+                  f"{len(extra)} (keywords.tsv)")
 
 
 # -- editing one entry ----------------------------------------------------------
@@ -273,14 +326,27 @@ def _squeeze(text):
     return re.sub(r"\s+", "", text)
 
 
-def run_app(case, app):
-    """(exit code, output) of app on case; a hang is code None."""
-    try:
-        proc = subprocess.run([app], cwd=case, capture_output=True, text=True,
-                              timeout=TIMEOUT)
-    except subprocess.TimeoutExpired as e:
-        return None, (e.stdout or b"").decode(errors="replace")
-    return proc.returncode, proc.stdout + proc.stderr
+def run_app(case, app, *args):
+    """(exit code, output) of app on case; a hang (no output for STALL
+    seconds) is code None."""
+    with tempfile.TemporaryFile() as out:
+        proc = subprocess.Popen([app, *args], cwd=case, stdout=out,
+                                stderr=subprocess.STDOUT)
+        seen = -1
+        while True:
+            try:
+                code = proc.wait(timeout=STALL)
+                break
+            except subprocess.TimeoutExpired:
+                size = os.fstat(out.fileno()).st_size
+                if size == seen:
+                    proc.kill()
+                    proc.wait()
+                    code = None
+                    break
+                seen = size
+        out.seek(0)
+        return code, out.read().decode(errors="replace")
 
 
 def try_bad(case, row, value):
@@ -458,7 +524,7 @@ def fuzz_case(base, rows, seed, dst):
         for app in (INITIALISER, SOLVER):
             code, out = run_app(case, app)
             if code is None:
-                return what, "hang", f"{app} ran over {TIMEOUT} s"
+                return what, "hang", f"{app} wrote nothing for {STALL} s"
             if code == 0:
                 if NAN.search(out):
                     return what, "nan", f"{app}: nan or inf in its output"
