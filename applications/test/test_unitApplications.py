@@ -1,7 +1,10 @@
 # rarefiedMultiphaseFoam. Copyright (C) 2026 The rarefiedMultiphaseFoam authors
 # SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
 """Runs every unit-test application (applications/test/Test-*): each exits
-non-zero when one of its own checks fails."""
+non-zero when one of its own checks fails.  Deterministic: Test-dragLaws
+compares the laws with limits and stored reference values, Test-
+gasInputChecks accepts or refuses input; no random draw, no statistical
+comparison (no share of the false-alarm budget)."""
 
 import glob
 import os

@@ -18,6 +18,13 @@ velocity, temperatures and pressure from the batch means, in every cell.
   recomputed here from the written means, to 1e-12 relative.  The count
   of empty cells in the log is the count of cells with dsmcRhoNMean = 0
   (rhoN's sums start from a tiny value, 1e-300 per cell volume, not 0).
+
+Deterministic: every comparison is exact to round-off between two
+functions of the same run's means, whatever the draws (the tutorials'
+own, upstream's random stream); no statistical comparison (no share of
+the false-alarm budget).  That supersonicCorner at SPARSE times its
+weight leaves some cell empty and that every wall is hit are facts of
+this deterministic run (26217 of 77760 cells empty; see the PASS line).
 """
 
 import os
