@@ -29,10 +29,10 @@ alpha, Kn_p), 3e-05 (gas and alpha, no parcels: the cloud is empty).
   the partly filled slab loses up to a slab (0.2 mm): each fails.
 - Shock: rhoN on the axis = jet 1e21 (1 + x/4 mm)^-2 upstream of x_sh, 6
   times the jet's value at x_sh downstream, rising by half to the wall;
-  5 % Gaussian noise per cell (fixed seed).  x_sh = 15.2 mm at 1e-05,
-  16.1 mm at 2e-05 (standoff 4.8 and 3.9 mm); tolerance one cell (0.5 mm):
-  the density is known at cell centres only.  At 3e-05 the jet alone: no
-  shock, said in a note.
+  5 % Gaussian noise per cell (seed rmf_testing.seed(7)).  x_sh = 15.2 mm
+  at 1e-05, 16.1 mm at 2e-05 (standoff 4.8 and 3.9 mm); tolerance one cell
+  (0.5 mm): the density is known at cell centres only.  At 3e-05 the jet
+  alone: no shock, said in a note.
 - Ejecta at 1e-05 (above layerTop, U_x < 0): 60 parcels at 30 degrees,
   50 m/s, d = 0.28 um, nParticle 100; 40 parcels at 60 degrees, 100 m/s,
   d = 0.56 um, nParticle 50; random azimuths of the in-plane velocity.
@@ -64,7 +64,30 @@ alpha, Kn_p), 3e-05 (gas and alpha, no parcels: the cloud is empty).
   which holds no NaN; --compare at the common times; a case without
   observablesDict stops with a message.
 
-About 15-25 s (blockMesh, postProcess, analyses and plots of the CLI runs).
+Statistics.  The checks above on the written case are exact for any draw
+of its random parts, but for the shock.  The checks on random draws (the
+case's shock; noisy axis profiles like the demo's; random demo-like
+layers of 5000 parcels for the crater) are count tests: a scenario is
+drawn N_DRAWS = 100 (axis profiles) or N_LAYERS = 100 (layers) times, seeds
+rmf_testing.seed(1..100), and each of its checks may miss in at most
+miss_limit draws, the count whose excess has probability MODULE_ALPHA/m
+(binomial) at the check's calibrated miss rate.  The rates come from
+calibration draws with other seeds (CAL_SEED + i, outside every seed
+set; 20000 profiles and 5000 layers per scenario, sizes fixed before any
+result was seen; calibrate(), the counts in CALIBRATION), taken at their
+99.9 % Clopper-Pearson upper bound: a tolerance is no longer judged by
+the seeds it is tested on.  A check that breaks misses in most draws
+(the old shock criterion, the old crater definition), far above its
+limit; a count limit at or above the draws (a vacuous check) fails.  The
+case's shock (test_shock_standoff) is one draw: its calibrated error
+(20000 noises, none missing) must leave the tolerance z_limit(m) of its
+sd.
+Family-wise error: 2.5e-4 (rmf_testing.MODULE_ALPHA) over m = 26
+comparisons (COMPARISONS: every check of every scenario, and the spread
+of drop/sigma of the untouched layers), Bonferroni, 9.6e-6 each.
+
+About 40 s (blockMesh, postProcess, analyses and plots of the CLI runs,
+400 random layers, 900 axis profiles).
 """
 
 import math
@@ -76,8 +99,11 @@ import sys
 
 import numpy as np
 import pytest
+from scipy import stats
 
+import rmf_testing
 from rmf import foam, psi
+from rmf_testing import report, seed
 
 BUILD = os.path.join(foam.PROJECT_DIR, "build", "validation", "psiObservables")
 
@@ -92,6 +118,46 @@ ALPHA_MAX = {"1e-05": 0.3, "2e-05": 0.45, "3e-05": 0.2}
 CRATER_TOL = 0.03e-3
 SHOCK_TOL = DX_CELL
 EXACT = 1e-9
+THICK_WIDTHS = (0.2e-3, 0.5e-3, 1e-3)
+
+# Count tests (module docstring): draws tested and calibration draws, the
+# sizes fixed before any result was seen
+N_DRAWS, N_LAYERS = 100, 100                        # tested, seeds seed(1..n)
+CAL_DRAWS, CAL_LAYERS = 20000, 5000
+CAL_SEED = 10**6                                    # calibration seeds CAL_SEED + i
+#: Misses of each check in the calibration draws (calibrate()):
+#: {scenario: (draws, {check: misses})}
+CALIBRATION = {
+    "case shock 1e-05": (20000, {"standoff within a cell": 0}),
+    "case shock 2e-05": (20000, {"standoff within a cell": 0}),
+    "flat jet, noise 20 %": (20000, {"standoff within 0.4 mm": 38}),
+    "flat jet, noise 5 %": (20000, {"standoff within 0.25 mm": 0}),
+    "dust layer": (20000, {"standoff within a cell, peak at the layer top": 0}),
+    "no shock": (20000, {"no shock (not sustained)": 62}),
+    "demo rows": (20000, {"standoff within a cell": 9}),
+    "thick shock 0.2 mm": (20000, {"standoff within half a cell": 0}),
+    "thick shock 0.5 mm": (20000, {"standoff within half a cell": 6}),
+    "thick shock 1 mm": (20000, {"standoff within half a cell": 714}),
+    "untouched layer": (5000, {"axis drop within 3 sigma of 0": 42, "no crater": 120,
+                               "median sigma in (0.015, 0.04) mm": 1, "nothing eroded": 5}),
+    "compacted layer": (5000, {"axis drop within 3 sigma of H/2": 42,
+                               "crater depth within 4 sigma of H/2": 312, "nothing eroded": 0}),
+    "known crater": (5000, {"axis drop within 3 sigma of D": 94,
+                            "crater depth within 4 sigma of D": 87, "radius within 1 mm": 9,
+                            "eroded on the axis within 0.15 of 0.6": 5,
+                            "eroded layer within 0.006": 36}),
+    "dilute ejecta": (5000, {"axis drop within 1 sigma of the drop without the cloud": 1737,
+                             "axis drop within 3 sigma of D": 175,
+                             "eroded on the axis within 0.05 of that without the cloud": 95}),
+}
+#: Mean and sd of sigma_scale over blocks of N_LAYERS untouched calibration
+#: layers (calibrate())
+SCALE_CALIBRATION = (0.980, 0.019)
+#: Bias and sd of the case's standoff at each time over CAL_DRAWS noises
+#: (calibrate())
+CASE_SHOCK_ERROR = {"1e-05": (1.26e-05, 4.96e-05), "2e-05": (-6.78e-05, 4.94e-05)}
+#: The module's comparisons: every check of every scenario, and the spread
+COMPARISONS = sum(len(checks) for _, checks in CALIBRATION.values()) + 1
 
 HEADER = "FoamFile {{ version 2.0; format ascii; class {cls}; object {name}; }}\n"
 HALF = math.radians(2.5)
@@ -293,7 +359,7 @@ def build(case, times=("0", "1e-05", "2e-05", "3e-05")):
     foam.run(case, "blockMesh")
     C = foam.cell_centres(case, "0")
     x, r = C[:, 0], np.hypot(C[:, 1], C[:, 2])
-    rng = np.random.default_rng(7)
+    rng = np.random.default_rng(seed(7))
     in_layer = (x > TOP) & (r < R_LAYER)
     for t in times:
         alpha = np.where(in_layer, 0.01, 0.0)
@@ -361,13 +427,36 @@ def test_crater_initial_layer_is_flat(analysis):
     assert abs(c["eroded_layer"]) < 1e-12
 
 
+def case_shock(cells, time):
+    """The scenario of test_shock_standoff for calibrate: the axis density
+    build writes at time, with the noise of seed s, through the analysis's
+    axis profile and shock."""
+    def scenario(s):
+        rho = axis_density(cells["x"], SHOCKS[time], np.random.default_rng(s))
+        x, values = psi.axis_density(cells["x"], cells["r"], rho,
+                                     dict(surface=X_S, nozzleRadius=R_NOZZLE))
+        shock = psi.shock_standoff(x, values, X_S)
+        return {"standoff within a cell": shock["standoff"] is not None and
+                abs(shock["standoff"] - (X_S - SHOCKS[time])) < SHOCK_TOL}, shock
+    return scenario
+
+
 @pytest.mark.parametrize("time", ["1e-05", "2e-05"])
 def test_shock_standoff(analysis, time):
+    """One realisation of the noise (seed(7)): the standoff within a cell.
+    Its calibrated error (CASE_SHOCK_ERROR, bias and sd over CAL_DRAWS
+    noises, no miss among them) must leave the tolerance z_limit of the
+    comparison's share of the budget (a Gaussian model of the error, a
+    smooth function of the noise near the step)."""
     shock = row(analysis, time)["shock"]
     expected = X_S - SHOCKS[time]
-    print(f"shock {time}: standoff {1e3*shock['standoff']:.3f} mm, expected "
-          f"{1e3*expected:.3f} (tolerance {1e3*SHOCK_TOL:g} mm)")
-    assert abs(shock["standoff"] - expected) < SHOCK_TOL
+    bias, sd = CASE_SHOCK_ERROR[time]
+    assert CALIBRATION[f"case shock {time}"][1]["standoff within a cell"] == 0
+    assert (SHOCK_TOL - abs(bias))/sd > rmf_testing.z_limit(COMPARISONS), (bias, sd)
+    assert report(f"shock {time}", abs(shock["standoff"] - expected) < SHOCK_TOL,
+                  f"standoff {1e3*shock['standoff']:.3f} mm, expected {1e3*expected:.3f} "
+                  f"(tolerance {1e3*SHOCK_TOL:g} mm; calibrated error {1e3*bias:+.3f} +- "
+                  f"{1e3*sd:.3f} mm)")
 
 
 def test_no_shock_and_missing_data_are_noted(analysis):
@@ -520,25 +609,33 @@ def test_cli_without_settings(tmp_path):
     assert "observablesDict: missing" in proc.stderr, proc.stderr
 
 
-@pytest.mark.parametrize("width", [0.2e-3, 0.5e-3, 1e-3])
-def test_thick_shock_before_a_cold_wall(width):
-    """A shock of finite thickness (tanh of half width 0.2-1 mm, density
+def thick_shock(width):
+    """A shock of finite thickness (tanh of half width `width`, density
     ratio 5 over the jet at x_sh = 15 mm) before a cold-wall layer (the
-    density tripling over the last 0.5 mm), 5 % noise, 0.5 mm cells: the
-    standoff is found within half a cell (0.25 mm).  Measured over 20 seeds:
-    bias -0.04 to +0.00 mm, standard deviation <= 0.06 mm; a 2 mm half
+    density tripling over the last 0.5 mm), 5 % noise of seed s, 0.5 mm
+    cells: the standoff within half a cell (0.25 mm)."""
+    x_sh = 0.015
+
+    def scenario(s):
+        rng = np.random.default_rng(s)
+        x = np.arange(DX_CELL/2, X_S, DX_CELL)
+        jet = 1e21*(1 + x/4e-3)**-2
+        rho = jet + (5e21*(1 + x_sh/4e-3)**-2 - jet)*0.5*(1 + np.tanh((x - x_sh)/width))
+        rho = rho*(1 + 2*np.exp(-(X_S - x)/0.5e-3))*(1 + 0.05*rng.standard_normal(len(x)))
+        shock = psi.shock_standoff(x, rho, X_S)
+        return {"standoff within half a cell": shock["standoff"] is not None and
+                abs(shock["standoff"] - (X_S - x_sh)) < DX_CELL/2}, shock
+    return scenario
+
+
+@pytest.mark.parametrize("width", THICK_WIDTHS)
+def test_thick_shock_before_a_cold_wall(width):
+    """thick_shock over N_DRAWS seeds for half widths 0.2-1 mm (count
+    test, module docstring).  Calibrated misses: 0, 6 and 714 of 20000
+    (the 1 mm shock misses half a cell in 3.6 % of draws); a 2 mm half
     width near the wall biases it by up to 0.9 mm (not tested: the shock
     is then as thick as the standoff)."""
-    rng = np.random.default_rng(11)
-    x = np.arange(DX_CELL/2, X_S, DX_CELL)
-    x_sh = 0.015
-    jet = 1e21*(1 + x/4e-3)**-2
-    rho = jet + (5e21*(1 + x_sh/4e-3)**-2 - jet)*0.5*(1 + np.tanh((x - x_sh)/width))
-    rho = rho*(1 + 2*np.exp(-(X_S - x)/0.5e-3))*(1 + 0.05*rng.standard_normal(len(x)))
-    shock = psi.shock_standoff(x, rho, X_S)
-    print(f"thick shock {1e3*width} mm: standoff {1e3*shock['standoff']:.3f} mm, expected "
-          f"{1e3*(X_S - x_sh):.3f} (tolerance 0.25 mm)")
-    assert abs(shock["standoff"] - (X_S - x_sh)) < DX_CELL/2
+    count_test(f"thick shock {1e3*width:g} mm", thick_shock(width))
 
 
 def test_compare_nearest_times(case):
@@ -587,46 +684,64 @@ def demo_axis(rng, standoff=3e-3, dip=None, dust_top=None, cells=80, noise=0.2):
 DEMO_SHOCK_TOL = 0.25e-3      # one demo cell: the density is known at cell centres
 
 
+def flat_jet(noise, tolerance):
+    """The demo's case: a flat jet with the noise of seed s, standoff 3
+    mm, a 30 % dip of the jet over 1 mm at x = 7 mm (about where the hybrid
+    demo's spurious 11.9 mm came from): the standoff within tolerance."""
+    def scenario(s):
+        x, rho = demo_axis(np.random.default_rng(s), dip=(7e-3, 0.3), noise=noise)
+        shock = psi.shock_standoff(x, rho, X_S)
+        return {f"standoff within {1e3*tolerance:g} mm": shock["standoff"] is not None and
+                abs(shock["standoff"] - 3e-3) < tolerance}, shock
+    return scenario
+
+
 @pytest.mark.parametrize("noise, tolerance", [(0.2, 0.4e-3), (0.05, DEMO_SHOCK_TOL)])
-@pytest.mark.parametrize("seed", range(20))
-def test_shock_on_a_noisy_flat_jet(seed, noise, tolerance):
-    """The demo's case: a flat, noisy jet, standoff 3 mm, a 30 % dip of the
-    jet over 1 mm at x = 7 mm (about where the hybrid demo's spurious
-    11.9 mm came from).  Noise 20 % per cell (one axis row of the demo's
-    batch means): tolerance 0.4 mm, measured over these 20 seeds 2.68 to
-    3.01 mm (the 3-cell running mean smears the one-cell step: bias about
-    -0.1 mm); noise 5 % (the rows within nozzleRadius/8 averaged):
-    tolerance one cell, 0.25 mm.  The old criterion (first midpoint
-    crossing after the global minimum) puts the shock at 7-13 mm for most
-    of these seeds (crater.md)."""
-    rng = np.random.default_rng(seed)
-    x, rho = demo_axis(rng, dip=(7e-3, 0.3), noise=noise)
+def test_shock_on_a_noisy_flat_jet(noise, tolerance):
+    """flat_jet over N_DRAWS seeds (count test, module docstring).  Noise
+    20 % per cell (one axis row of the demo's batch means): tolerance 0.4
+    mm (the 3-cell running mean smears the one-cell step: bias about -0.1
+    mm); noise 5 % (the rows within nozzleRadius/8 averaged): one cell,
+    0.25 mm.  The old criterion (first midpoint crossing after the global
+    minimum) puts the shock at 7-13 mm for most seeds (crater.md): it
+    would miss in most draws."""
+    count_test(f"flat jet, noise {100*noise:g} %", flat_jet(noise, tolerance))
+
+
+def dust_layer(s):
+    """The gas held off the wall by a dust layer 1 mm thick (the MPPIC
+    demo), 5 % noise of seed s: its density peaks at the layer top and
+    falls inside the layer.  The shock is searched up to that peak:
+    standoff 3 mm within a cell, the peak between 17 and 19 mm."""
+    x, rho = demo_axis(np.random.default_rng(s), dust_top=0.019, noise=0.05)
     shock = psi.shock_standoff(x, rho, X_S)
-    print(f"seed {seed}, noise {noise}: standoff {1e3*shock['standoff']:.3f} mm "
-          "(expected 3.000)")
-    assert abs(shock["standoff"] - 3e-3) < tolerance
+    return {"standoff within a cell, peak at the layer top": shock["standoff"] is not None
+            and abs(shock["standoff"] - 3e-3) < DEMO_SHOCK_TOL
+            and 0.017 < shock["x_peak"] < 0.019}, shock
 
 
 def test_shock_before_a_dust_layer():
-    """The gas held off the wall by a dust layer 1 mm thick (the MPPIC
-    demo): its density peaks at the layer top and falls inside the layer.
-    The shock is searched up to that peak: standoff 3 mm within a cell."""
-    x, rho = demo_axis(np.random.default_rng(3), dust_top=0.019, noise=0.05)
-    shock = psi.shock_standoff(x, rho, X_S)
-    assert abs(shock["standoff"] - 3e-3) < DEMO_SHOCK_TOL
-    assert 0.017 < shock["x_peak"] < 0.019
+    """dust_layer over N_DRAWS seeds (count test)."""
+    count_test("dust layer", dust_layer)
 
 
-def test_no_shock_in_a_noisy_jet():
-    """The flat noisy jet without a shock, with a dip and a one-cell spike
-    near the wall (a rise not sustained over 3 cells): no shock."""
-    rng = np.random.default_rng(5)
+def no_shock(s):
+    """The flat jet of 20 % noise (seed s) without a shock, with a dip and
+    a one-cell spike near the wall (a rise not sustained over 3 cells): no
+    shock."""
+    rng = np.random.default_rng(s)
     x = (np.arange(80) + 0.5)*X_S/80
     rho = 1e22*(1 + 0.2*rng.standard_normal(80))
     rho[25:29] *= 0.6
     rho[-1] *= 4
     shock = psi.shock_standoff(x, rho, X_S)
-    assert shock["standoff"] is None and "sustained" in shock["note"], shock
+    return {"no shock (not sustained)": shock["standoff"] is None and
+            "sustained" in shock["note"]}, shock
+
+
+def test_no_shock_in_a_noisy_jet():
+    """no_shock over N_DRAWS seeds (count test)."""
+    count_test("no shock", no_shock)
 
 
 def test_axis_band_averages_rows():
@@ -680,55 +795,71 @@ def with_heights(p, h, keep=None):
     return q
 
 
-def test_crater_of_an_untouched_layer_is_zero():
-    """5000 parcels at t = 0: every annulus holds >= 100 parcels (the axis
-    one about 3-4 mm wide); the surface drop on the axis is within 3 of its
-    sigma of 0 and no annulus has a significant drop (crater depth 0).  The
-    old definition (slab counts, max over 45 annuli) read 0.97 mm on the
-    demo's t = 0.  The stated sigma against the spread: over 20 seeds the
-    rms of drop/sigma over the annuli is 1 within 0.15 (measured 1.05
-    pooled over 100 seeds); at most 2 of the 20 layers show a spurious
-    crater (the count test z > 3: measured 1 in 100 layers, 3 in 200;
-    judged on drop > 3 sigma instead, 30 in 100: the quantile's error has
-    a long tail toward low surfaces, about 6 effective grains above Q_0.9)."""
-    ref = demo_layer(1)
+def untouched(s):
+    """The layer of seed s at t = 0 against itself: the surface drop on
+    the axis within 3 of its sigma of 0, no annulus with a significant
+    drop (crater depth 0), the median sigma 0.015-0.04 mm (0.027 mm for
+    100 parcels), nothing eroded."""
+    ref = demo_layer(s)
     c = psi.surface_profile(ref, ref, DEMO)
-    print(f"t = 0: axis drop {1e3*c['surface_drop']:.4f} +- {1e3*c['surface_drop_sigma']:.4f} "
-          f"mm, crater depth {1e3*c['max_depth']:.4f} +- {1e3*c['max_depth_sigma']:.4f} mm, "
-          f"{len(c['r'])} annuli, first {1e3*c['r_edges'][1]:.2f} mm")
-    assert np.all(c["parcels"] >= psi.MIN_PARCELS)
-    assert abs(c["surface_drop"]) < 3*c["surface_drop_sigma"]
-    assert c["max_depth"] == 0.0 and c["radius"] is None
-    assert 0.015e-3 < c["max_depth_sigma"] < 0.04e-3      # 0.027 mm for 100 parcels
-    assert c["eroded_layer"] == pytest.approx(0, abs=1e-12)
-    z, spurious = [], 0
-    for seed in range(20):
-        p = demo_layer(100 + seed)
-        c = psi.surface_profile(p, p, DEMO)
-        z.append(c["depth"]/c["sigma"])
-        spurious += c["max_depth"] > 0
-    pooled = math.sqrt(np.mean(np.concatenate(z)**2))
-    print(f"20 seeds: rms drop/sigma {pooled:.3f}, spurious craters {spurious}")
-    assert abs(pooled - 1) < 0.15 and spurious <= 2
+    assert np.all(c["parcels"] >= psi.MIN_PARCELS)        # by construction
+    return {"axis drop within 3 sigma of 0": abs(c["surface_drop"]) < 3*c["surface_drop_sigma"],
+            "no crater": c["max_depth"] == 0.0 and c["radius"] is None,
+            "median sigma in (0.015, 0.04) mm": 0.015e-3 < c["max_depth_sigma"] < 0.04e-3,
+            "nothing eroded": abs(c["eroded_layer"]) < 1e-12}, c
+
+
+def sigma_scale(profiles):
+    """The spread of drop/sigma over every annulus of the profiles, robust
+    to the quantile's long tail: 1.4826 x the median of |drop/sigma| (1
+    for a Gaussian of unit sd)."""
+    return 1.4826*float(np.median(np.abs(np.concatenate([c["depth"]/c["sigma"]
+                                                          for c in profiles]))))
+
+
+def test_crater_of_an_untouched_layer_is_zero():
+    """untouched over N_LAYERS seeds (count test, module docstring): every
+    annulus holds >= 100 parcels (the axis one about 3-4 mm wide).  The
+    old definition (slab counts, max over 45 annuli) read 0.97 mm on the
+    demo's t = 0: "no crater" would miss in every layer.  Spurious
+    craters (the count test z > 3) are rare, not absent (about 1 % of
+    layers; judged on drop > 3 sigma instead, 30 %: the quantile's error
+    has a long tail toward low surfaces, about 6 effective grains above
+    Q_0.9).  The stated sigma against the spread: sigma_scale of the
+    N_LAYERS layers' annuli within 1 +- 0.15 (SCALE_CALIBRATION: its mean
+    and sd over blocks of N_LAYERS calibration layers; the test asserts
+    that 0.15 leaves the comparison's z_limit of that sd).  Not the rms
+    (the old check, 1 +- 0.15 over 20 layers): the tail makes it 1.05 +-
+    0.05 over blocks of 100 layers (0.15 is 2 sd: a false alarm in about
+    3 % of runs), and an outlier of 45 sigma dominates it."""
+    results = count_test("untouched layer", untouched, N_LAYERS)
+    scale = sigma_scale([c for _, c in results])
+    mean, sd = SCALE_CALIBRATION
+    assert (0.15 - abs(mean - 1))/sd > rmf_testing.z_limit(COMPARISONS), SCALE_CALIBRATION
+    assert report("untouched layer: spread of drop/sigma", abs(scale - 1) < 0.15,
+                  f"{scale:.3f} over {N_LAYERS} layers (1 +- 0.15; calibrated {mean:.3f} +- "
+                  f"{sd:.3f})")
+
+
+def compacted(s):
+    """The grains of the layer of seed s compacted to half the height (h ->
+    h/2): the surface drops by H/2 = 0.5 mm everywhere (3 sigma on the
+    axis, 4 sigma for the deepest of ~38 annuli: the max of ~38 Gaussian
+    estimates is ~2.3 sigma high) and nothing is eroded (every grain is in
+    the dense layer)."""
+    ref = demo_layer(s)
+    c = psi.surface_profile(with_heights(ref, heights(ref)/2), ref, DEMO)
+    return {"axis drop within 3 sigma of H/2":
+            abs(c["surface_drop"] - DEMO_H/2) < 3*c["surface_drop_sigma"],
+            "crater depth within 4 sigma of H/2":
+            abs(c["max_depth"] - DEMO_H/2) < 4*c["max_depth_sigma"],
+            "nothing eroded": abs(c["eroded_axis"]) < 1e-12 and abs(c["eroded_layer"]) < 1e-12}, c
 
 
 def test_compacted_layer_reads_a_surface_drop():
-    """The same grains compacted to half the height (h -> h/2): the surface
-    drops by H/2 = 0.5 mm everywhere (tolerance 3 sigma on the axis, 4
-    sigma for the deepest of ~38 annuli: the max of ~38 Gaussian
-    estimates is ~2.3 sigma high) and nothing is eroded (every grain is
-    in the dense layer: exactly 0).  The old definition (grain count over
-    the initial packing) read no drop at all."""
-    ref = demo_layer(2)
-    c = psi.surface_profile(with_heights(ref, heights(ref)/2), ref, DEMO)
-    print(f"compacted: axis drop {1e3*c['surface_drop']:.4f} +- "
-          f"{1e3*c['surface_drop_sigma']:.4f} mm, depth {1e3*c['max_depth']:.4f} +- "
-          f"{1e3*c['max_depth_sigma']:.4f}, eroded {c['eroded_axis']:.4f}, "
-          f"{c['eroded_layer']:.4f}")
-    assert abs(c["surface_drop"] - DEMO_H/2) < 3*c["surface_drop_sigma"]
-    assert abs(c["max_depth"] - DEMO_H/2) < 4*c["max_depth_sigma"]
-    assert c["eroded_axis"] == pytest.approx(0, abs=1e-12)
-    assert c["eroded_layer"] == pytest.approx(0, abs=1e-12)
+    """compacted over N_LAYERS seeds (count test).  The old definition
+    (grain count over the initial packing) read no drop at all."""
+    count_test("compacted layer", compacted, N_LAYERS)
 
 
 CRATER_D, CRATER_R = 0.6e-3, 10e-3
@@ -740,39 +871,45 @@ def cratered(ref):
     return with_heights(ref, h, ~((r < CRATER_R) & (h > DEMO_H - CRATER_D)))
 
 
-def test_known_crater():
-    """A crater of depth D = 0.6 mm, radius R_c = 10 mm (grains removed):
-    surface drop on the axis and crater depth D within 3 and 4 sigma (as
-    above); crater radius (half depth) R_c within 1 mm (the annulus
-    holding R_c averages the two depths; annuli ~1 mm wide there, half
-    depth met between their centres: measured 0.2 mm); eroded fraction on
-    the axis D/H = 0.6 and of the layer D/H (R_c/R)^2 = 0.0296, within 3
-    binomial sigma of the grains counted (about 0.15 and 0.006)."""
-    ref = demo_layer(3)
+def known_crater(s):
+    """A crater of depth D = 0.6 mm, radius R_c = 10 mm (grains removed)
+    in the layer of seed s: surface drop on the axis and crater depth D
+    within 3 and 4 sigma (as above); crater radius (half depth) R_c within
+    1 mm (the annulus holding R_c averages the two depths; annuli ~1 mm
+    wide there, half depth met between their centres: measured 0.2 mm);
+    eroded fraction on the axis D/H = 0.6 and of the layer D/H (R_c/R)^2 =
+    0.0296, within 3 binomial sigma of the grains counted (about 0.15 and
+    0.006)."""
+    ref = demo_layer(s)
     c = psi.surface_profile(cratered(ref), ref, DEMO)
-    print(f"crater: axis drop {1e3*c['surface_drop']:.4f} +- {1e3*c['surface_drop_sigma']:.4f}, "
-          f"depth {1e3*c['max_depth']:.4f} +- {1e3*c['max_depth_sigma']:.4f} mm at r = "
-          f"{1e3*c['r_max']:.2f}, radius {1e3*c['radius']:.3f} mm, eroded "
-          f"{c['eroded_axis']:.4f}, {c['eroded_layer']:.5f}")
-    assert abs(c["surface_drop"] - CRATER_D) < 3*c["surface_drop_sigma"]
-    assert abs(c["max_depth"] - CRATER_D) < 4*c["max_depth_sigma"]
-    assert abs(c["radius"] - CRATER_R) < 1e-3
-    assert abs(c["eroded_axis"] - 0.6) < 0.15
-    assert abs(c["eroded_layer"] - 0.6*(CRATER_R/DEMO["layerRadius"])**2) < 0.006
+    return {"axis drop within 3 sigma of D": abs(c["surface_drop"] - CRATER_D) <
+            3*c["surface_drop_sigma"],
+            "crater depth within 4 sigma of D": c["max_depth"] is not None and
+            abs(c["max_depth"] - CRATER_D) < 4*c["max_depth_sigma"],
+            "radius within 1 mm": c["radius"] is not None and
+            abs(c["radius"] - CRATER_R) < 1e-3,
+            "eroded on the axis within 0.15 of 0.6": abs(c["eroded_axis"] - 0.6) < 0.15,
+            "eroded layer within 0.006": abs(c["eroded_layer"] - 0.6*(
+                CRATER_R/DEMO["layerRadius"])**2) < 0.006}, c
 
 
-def test_dilute_ejecta_do_not_raise_the_surface():
-    """The crater above with a dilute cloud of ejecta over it: 10 % of the
-    layer's real-grain density from the crater floor (0.4 mm) to 5 mm
-    above the wall, r < R_c: they hold as many real grains as 0.46 mm of
-    layer, enough to lift the 0.9 quantile into the cloud if counted.
-    Tolerance: the surface drop and eroded fraction on the axis as without
-    the cloud within one sigma (the cloud's grains in the slab holding the
-    surface are counted: measured 0.01 mm)."""
-    ref = demo_layer(3)
+def test_known_crater():
+    """known_crater over N_LAYERS seeds (count test)."""
+    count_test("known crater", known_crater, N_LAYERS)
+
+
+def dilute_ejecta(s):
+    """The crater of known_crater (seed s) with a dilute cloud of ejecta
+    over it (drawn with seed (s, 1)): 10 % of the layer's real-grain
+    density from the crater floor (0.4 mm) to 5 mm above the wall, r < R_c:
+    they hold as many real grains as 0.46 mm of layer, enough to lift the
+    0.9 quantile into the cloud if counted.  The surface drop and eroded
+    fraction on the axis as without the cloud, within one sigma and 0.05
+    (the cloud's grains in the slab holding the surface are counted:
+    measured 0.01 mm), and the drop within 3 sigma of D."""
+    ref = demo_layer(s)
     base = psi.surface_profile(cratered(ref), ref, DEMO)
-    rng = np.random.default_rng(4)
-    R = DEMO["layerRadius"]
+    rng = np.random.default_rng([s, 1])
     inner = psi.radius(ref["pos"]) < CRATER_R
     cloud_n = int(0.1*inner.sum()*(5e-3 - 0.4e-3)/DEMO_H)
     pick = rng.choice(np.nonzero(inner)[0], cloud_n)
@@ -781,33 +918,38 @@ def test_dilute_ejecta_do_not_raise_the_surface():
     p = cratered(ref)
     p = dict(pos=np.concatenate([p["pos"], cloud["pos"]]), n=np.concatenate([p["n"], cloud["n"]]))
     c = psi.surface_profile(p, ref, DEMO)
-    print(f"with ejecta: axis drop {1e3*c['surface_drop']:.4f} (without "
-          f"{1e3*base['surface_drop']:.4f}) +- {1e3*c['surface_drop_sigma']:.4f} mm; "
-          f"eroded {c['eroded_axis']:.4f} ({base['eroded_axis']:.4f})")
-    assert abs(c["surface_drop"] - base["surface_drop"]) < c["surface_drop_sigma"]
-    assert abs(c["surface_drop"] - CRATER_D) < 3*c["surface_drop_sigma"]
-    assert abs(c["eroded_axis"] - base["eroded_axis"]) < 0.05
+    return {"axis drop within 1 sigma of the drop without the cloud":
+            abs(c["surface_drop"] - base["surface_drop"]) < c["surface_drop_sigma"],
+            "axis drop within 3 sigma of D": abs(c["surface_drop"] - CRATER_D) <
+            3*c["surface_drop_sigma"],
+            "eroded on the axis within 0.05 of that without the cloud":
+            abs(c["eroded_axis"] - base["eroded_axis"]) < 0.05}, c
+
+
+def test_dilute_ejecta_do_not_raise_the_surface():
+    """dilute_ejecta over N_LAYERS seeds (count test)."""
+    count_test("dilute ejecta", dilute_ejecta, N_LAYERS)
 
 
 def test_sparse_layer_is_not_measurable():
     """Fewer than 100 parcels in the whole layer: one annulus, not
-    measurable: NaN arrays, None numbers (n/a in the tables)."""
-    ref = demo_layer(5, n=60)
+    measurable: NaN arrays, None numbers (n/a in the tables).  Exact for
+    any draw (60 < 100)."""
+    ref = demo_layer(seed(5), n=60)
     c = psi.surface_profile(ref, ref, DEMO)
     assert len(c["r"]) == 1 and np.isnan(c["height"]).all()
     assert c["surface_drop"] is None and c["max_depth"] is None
 
 
-@pytest.mark.parametrize("seed", range(20))
-def test_shock_from_the_demo_rows(seed):
+def demo_rows(s):
     """The demo's mesh near the axis: 80 columns of 0.25 mm, rows at r =
     0.17, 0.39, 0.64, 0.89 and 1.15 mm (the demo's first rows), each cell
-    with 20 % noise of its own (a batch mean of ~25 simulators) and the
-    jet dip of test_shock_on_a_noisy_flat_jet.  The analysis's profile
-    (psi.axis_density: the rows within nozzleRadius/8 = 1.01 mm) finds the
-    standoff within one cell (0.25 mm; measured 2.81 to 3.06 mm over these
-    seeds); the first row alone (AXIS_BAND = 0) misses it for seed 12."""
-    rng = np.random.default_rng(seed)
+    with 20 % noise of its own (a batch mean of ~25 simulators; seed s)
+    and the jet dip of flat_jet.  The analysis's profile (psi.axis_density:
+    the rows within nozzleRadius/8 = 1.01 mm) finds the standoff within
+    one cell (0.25 mm); the first row alone (AXIS_BAND = 0) misses it for
+    some draws (seed 12 of the old fixed seeds)."""
+    rng = np.random.default_rng(s)
     rows = np.array([0.16871, 0.39366, 0.6411, 0.89175, 1.15])*1e-3
     x = (np.arange(80) + 0.5)*X_S/80
     xs, rs, values = [], [], []
@@ -817,7 +959,95 @@ def test_shock_from_the_demo_rows(seed):
     settings = dict(surface=X_S, nozzleRadius=R_NOZZLE)
     xa, rho = psi.axis_density(np.concatenate(xs), np.concatenate(rs),
                                np.concatenate(values), settings)
-    shock = psi.shock_standoff(xa, rho, X_S)
-    print(f"seed {seed}, demo rows: standoff {1e3*shock['standoff']:.3f} mm")
     assert len(xa) == 80
-    assert abs(shock["standoff"] - 3e-3) < DEMO_SHOCK_TOL
+    shock = psi.shock_standoff(xa, rho, X_S)
+    return {"standoff within a cell": shock["standoff"] is not None and
+            abs(shock["standoff"] - 3e-3) < DEMO_SHOCK_TOL}, shock
+
+
+def test_shock_from_the_demo_rows():
+    """demo_rows over N_DRAWS seeds (count test)."""
+    count_test("demo rows", demo_rows)
+
+
+# ------------------------------------ count tests and their calibration ----
+
+def scenarios(cells):
+    """Every scenario of a count test (and of the case's shock, on its
+    cells), by name: {name: (scenario, calibration draws)}."""
+    out = {f"case shock {t}": (case_shock(cells, t), CAL_DRAWS) for t in SHOCKS}
+    out.update({
+        "flat jet, noise 20 %": (flat_jet(0.2, 0.4e-3), CAL_DRAWS),
+        "flat jet, noise 5 %": (flat_jet(0.05, DEMO_SHOCK_TOL), CAL_DRAWS),
+        "dust layer": (dust_layer, CAL_DRAWS),
+        "no shock": (no_shock, CAL_DRAWS),
+        "demo rows": (demo_rows, CAL_DRAWS)})
+    out.update({f"thick shock {1e3*w:g} mm": (thick_shock(w), CAL_DRAWS) for w in THICK_WIDTHS})
+    out.update({"untouched layer": (untouched, CAL_LAYERS),
+                "compacted layer": (compacted, CAL_LAYERS),
+                "known crater": (known_crater, CAL_LAYERS),
+                "dilute ejecta": (dilute_ejecta, CAL_LAYERS)})
+    return out
+
+
+def miss_rate(name, check):
+    """Upper bound of the miss rate of a check: the 99.9 % Clopper-Pearson
+    bound of its misses among the calibration draws (CALIBRATION)."""
+    draws, misses = CALIBRATION[name][0], CALIBRATION[name][1][check]
+    return float(stats.beta.ppf(1 - 1e-3, misses + 1, draws - misses))
+
+
+def miss_limit(n, rate):
+    """The most misses among n independent draws that a check may have:
+    more has probability at most MODULE_ALPHA/COMPARISONS at the rate."""
+    return int(stats.binom.isf(rmf_testing.MODULE_ALPHA/COMPARISONS, n, rate))
+
+
+def count_test(name, scenario, n=N_DRAWS):
+    """Runs scenario for the seeds seed(1) .. seed(n); for each of its
+    checks the misses must be at most miss_limit at the calibrated rate,
+    and that limit below n (else the check would be vacuous).  Returns the
+    per-draw (checks, result)."""
+    results = [scenario(seed(k)) for k in range(1, n + 1)]
+    ok = True
+    for check in results[0][0]:
+        misses = sum(not checks[check] for checks, _ in results)
+        rate = miss_rate(name, check)
+        limit = miss_limit(n, rate)
+        ok &= report(f"{name}: {check}", misses <= limit < n,
+                     f"{misses} misses in {n} draws (limit {limit}, calibrated miss rate "
+                     f"below {rate:.2g})")
+    assert ok
+    return results
+
+
+def calibrate():
+    """Misses of every check over the calibration draws, seeds CAL_SEED +
+    i (outside every seed set's), and sigma_scale over blocks of N_LAYERS
+    untouched layers: the figures of CALIBRATION and SCALE_CALIBRATION.  Run (after . etc/bashrc: blockMesh) in the project
+    directory as PYTHONPATH=src/python:testing /usr/bin/python3
+    validation/psiObservables/test_psiObservables.py."""
+    cells = psi.mesh(build(os.path.join(BUILD, "calibration"), times=("0",)))
+    for name, (scenario, draws) in scenarios(cells).items():
+        misses, profiles, errors = {}, [], []
+        for i in range(draws):
+            checks, result = scenario(CAL_SEED + i)
+            for check, ok in checks.items():
+                misses[check] = misses.get(check, 0) + (not ok)
+            if name == "untouched layer":
+                profiles.append(result)
+            if name.startswith("case shock") and result["standoff"] is not None:
+                errors.append(result["standoff"] - (X_S - SHOCKS[name.split()[-1]]))
+        print(f'    "{name}": ({draws}, {misses}),', flush=True)
+        if errors:
+            print(f"    error {np.mean(errors):.4e} +- {np.std(errors, ddof=1):.4e}, largest "
+                  f"{np.abs(errors).max():.4e} m", flush=True)
+        if profiles:
+            scale = [sigma_scale(profiles[i:i + N_LAYERS])
+                     for i in range(0, len(profiles), N_LAYERS)]
+            print(f"    sigma_scale over blocks of {N_LAYERS}: {np.mean(scale):.4f} +- "
+                  f"{np.std(scale, ddof=1):.4f} ({len(scale)} blocks)", flush=True)
+
+
+if __name__ == "__main__":
+    calibrate()
