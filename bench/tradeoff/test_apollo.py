@@ -7,10 +7,9 @@ does (apollo.study, then tradeoff.write_outputs).
 
 Checks of the quick study (each able to fail; measured 2026-12-03 with
 seed 1):
-- every quick setting ran, and the report was written;
-- the reference against itself: every error exactly 0 (the errors are
-  taken against the same seed's reference run), and the base's cost
-  exactly 1 (the cost base);
+- every quick setting ran, and the report was written (the reference's
+  own errors, 0, and the base's cost, 1, hold by construction and are not
+  checked: they could not fail);
 - the shock stands by 20 us in every setting: a standoff on the axis
   between 1 and 3 mm (measured 1.69-2.10 mm; the demo's standoff is
   3.2 mm over 40-100 us, README.md's vibration table, and still moving
@@ -44,12 +43,7 @@ def test_apollo_quick():
                     sorted(rows) == sorted(apollo.QUICK) and os.path.exists(
                         os.path.join(tradeoff.OUT, "apolloPSI", "tradeoff.md")),
                     f"{len(rows)} of {len(apollo.QUICK)}")
-    ref, base = rows["reference"], rows["base"]
-    ok_ref = report("reference against itself, base cost 1",
-                    all(ref[e] == 0 for e in ("drop", "standoff", "alpha"))
-                    and base["cost"] == 1,
-                    f"errors {ref['drop']}, {ref['standoff']}, {ref['alpha']}; "
-                    f"base cost {base['cost']}")
+    base = rows["base"]
     standoff = {n: r["standoffValue"] for n, r in rows.items()}
     ok_shock = report("a shock on the axis by 20 us, 1-3 mm",
                       all(np.isfinite(v) and 1e-3 < v < 3e-3 for v in standoff.values()),
@@ -61,4 +55,4 @@ def test_apollo_quick():
                      all(np.isfinite(v) and v > 5 for v in z.values()),
                      ", ".join(f"{n} {1e3*rows[n]['dropValue']:.3f} mm ({v:.0f} sigma)"
                                for n, v in z.items()))
-    assert ok_all and ok_ref and ok_shock and ok_base and ok_drop
+    assert ok_all and ok_shock and ok_base and ok_drop
