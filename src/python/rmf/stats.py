@@ -21,18 +21,22 @@ S2(y) are compared with their null distributions from the ensemble itself
 sqrt((1 + 1/K)/(1 + 1/(K-1))) for the smaller ensemble), as a prediction
 interval: |S1(y) - mean S1| <= t * sd(S1) * sqrt(1 + 1/K) (two-sided) and
 S2(y) <= mean S2 + t * sd(S2) * sqrt(1 + 1/K) (one-sided), t the Student
-quantile with K - 1 degrees of freedom at probability 1 - alpha.
+quantile with K - 1 degrees of freedom at probability 1 - alpha/2 (level)
+or 1 - alpha (pattern).
 
-alpha = 1e-3: with fixed seeds the outcome is reproducible; a correct solver
-fails a given check with probability 1e-3 when the seeds change.
+alpha is the false-alarm probability of each single check (a correct
+solver fails it with probability alpha when the seeds change; with fixed
+seeds the outcome is reproducible): the caller gives its family-wise error
+divided by its number of checks (Bonferroni), which compare() cannot know.
+A Student quantile assumes normal statistics; at the small alpha of a
+Bonferroni share it is large for a small ensemble (K = 6: 23 for 1e-6),
+so K sets the power.
 """
 
 from dataclasses import dataclass
 
 import numpy as np
 from scipy import stats as _stats
-
-ALPHA = 1e-3
 
 
 @dataclass
@@ -63,9 +67,16 @@ def _pattern(y, m):
     return np.sqrt(np.mean(r**2))
 
 
-def compare(name, y, ensemble, alpha=ALPHA):
+def n_checks(y):
+    """Number of checks compare() makes of run y: a level per component and
+    one pattern."""
+    return np.asarray(y).reshape(len(y), -1).shape[1] + 1
+
+
+def compare(name, y, ensemble, alpha):
     """Level and pattern checks of run y (cells[, components]) against the
-    ensemble (list of K arrays of the same shape)."""
+    ensemble (list of K arrays of the same shape), each at false-alarm
+    probability alpha."""
     x = np.array(ensemble, float)
     y = np.asarray(y, float)
     K = len(x)
@@ -82,8 +93,8 @@ def compare(name, y, ensemble, alpha=ALPHA):
     pattern_y = _pattern(y, x.mean(axis=0))
 
     grow = np.sqrt(1 + 1/K)
-    t2 = _stats.t.ppf(1 - alpha/2, K - 1)
-    t1 = _stats.t.ppf(1 - alpha, K - 1)
+    t2 = _stats.t.isf(alpha/2, K - 1)
+    t1 = _stats.t.isf(alpha, K - 1)
 
     checks = []
     for c in range(level.shape[1]):
