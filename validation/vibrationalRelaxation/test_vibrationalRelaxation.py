@@ -266,7 +266,7 @@ def test_equipartition(baths):
     theta = SPECIES["N2"]["modes"]["stretch"]
     N = SIMULATORS_BATH
     ok = True
-    for seed, (t, T_tr, e_rot, level) in enumerate(baths, 1):
+    for k, (t, T_tr, e_rot, level) in enumerate(baths, 1):
         Tf = final_temperature(T_tr[0], e_rot[0], theta)
         a = level[-FINAL_WRITES:].mean()
         T_v = theta/math.log1p(1/a)
@@ -276,7 +276,7 @@ def test_equipartition(baths):
                   "T_vib": (T_v, math.sqrt(a*(1 + a)/N)*dTda)}
         dev = {k: (v - Tf)/sigma for k, (v, sigma) in values.items()}
         good = all(abs(d) <= N_SIGMA for d in dev.values())
-        print(f"\n{'PASS' if good else 'FAIL'} N2 heat bath seed {seed}: equipartition "
+        print(f"\n{'PASS' if good else 'FAIL'} N2 heat bath {k}: equipartition "
               f"at {Tf:.1f} K: " + ", ".join(
                   f"{k} {values[k][0]:.1f} ({dev[k]:+.2f} sigma)" for k in values))
         ok &= good
