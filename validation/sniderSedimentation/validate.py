@@ -9,18 +9,22 @@ Runs the tutorials/solids/sniderSedimentation set-up, each to 0.6 s:
   parallel  e = 0.85, 2 METIS ranks (decomposePar/reconstructPar),
   e05       e = 0.5 (walls, collision time scale and packing correction
             limit), one rank,
-  and e = 0.85 and e = 0.5 again with randomSeed 1 and 2 (RESTITUTION_SEEDS;
-  the restitution check compares means over seeds, rmf.snider),
 then applies the checks of rmf.snider (tolerances and their origin are
 stated there) and draws sniderSedimentation.png: alpha(z) at 0.1, 0.15,
 0.2 and 0.6 s for the serial and the parallel run, and e = 0.85 against
 e = 0.5 at 0.2 s.
 
+With --restitution (restitution(); ./Alltest --long) it also runs the
+restitution check of rmf.snider: e = 0.85 and e = 0.5, reduced, each with
+the cloud's seeds 0 to RESTITUTION_SEEDS - 1 (the sharper interface of
+e = 0.5 is a difference of means over seeds; the ensemble's size and its
+false-alarm probability: rmf.snider).
+
 With --variants it also runs, side by side to 0.6 s, the variants of
 VARIANTS (v1912's explicit and implicit packing instead of ours; ours
 with e = 0.5; stochastic NTC collisions instead of MPPIC; the NTC/MPPIC
 hybrid; reduced: the last two only, REDUCED_VARIANTS), prints each run's
-largest layer, raw cell and averaged cell alpha and its wall time, and
+largest layer, raw cell and averaged cell alpha, and
 draws sniderVariants.png: alpha(z) at 0.1, 0.15, 0.2 and 0.6 s of each.
 
 Reduced (default, in ./Alltest): 4 times fewer parcels of 4 times the
@@ -33,15 +37,22 @@ tests run it also with twoSided's smoothing 1 and without its
 packedCells (doc/physics.md 5.3.1).
 The two single-rank runs go side by side on the machine's 2 cores, then
 the parallel one.
+
+Seeds: every run sets the initialiser's randomSeed (the parcels' places)
+to rmf_testing.seed(1) and the cloud's (the isotropy model's draws) to
+rmf_testing.seed(k), k = 0 but in the restitution ensemble, so that
+./Alltest --seed-set N (RMF_SEED_SET=N) changes every realisation.
 """
 
 import argparse
 import concurrent.futures
 import os
 import sys
-import time
 
 from rmf import foam, snider
+
+sys.path.insert(0, os.path.join(foam.PROJECT_DIR, "testing"))
+from rmf_testing import seed  # noqa: E402
 
 TUTORIAL = os.path.join(foam.PROJECT_DIR, "tutorials", "solids", "sniderSedimentation")
 BUILD = os.path.join(foam.PROJECT_DIR, "build", "validation", "sniderSedimentation")
@@ -49,8 +60,9 @@ INIT = "system/grainsInitialiseDict"
 PROPS = "constant/grainsProperties"
 FULL_PARCELS, FULL_WEIGHT = 162232, 749
 REDUCTION = 4
-# Further realisations of e = 0.85 and e = 0.5 for the restitution check
-RESTITUTION_SEEDS = (1, 2)
+# Realisations of e = 0.85 and of e = 0.5 for the restitution check (cloud
+# seeds 0 to RESTITUTION_SEEDS - 1; rmf.snider: why 8)
+RESTITUTION_SEEDS = 8
 
 # Variants of the tutorial (doc/physics.md 7.1, 5.2, 5.3, 5.5):
 # grainsProperties entries each sets
@@ -77,8 +89,15 @@ REDUCED_VARIANTS = ("stochastic", "hybrid")
 REDUCED_ALPHA_SWITCH = 0.2
 
 
-def prepare(build, name, scale, end, e=None, entries=None):
+def seeded(case, k=0):
+    """Set the case's seeds (module docstring): the cloud's seed(k)."""
+    foam.set_entry(case, INIT, "randomSeed", seed(1))
+    foam.set_entry(case, PROPS, "randomSeed", seed(k))
+
+
+def prepare(build, name, scale, end, e=None, entries=None, k=0):
     case = foam.copy_setup(TUTORIAL, os.path.join(build, name))
+    seeded(case, k)
     for entry, value in (entries or {}).items():
         foam.set_entry(case, PROPS, entry, value)
     foam.set_entry(case, INIT, "regions/column/nParcels", round(FULL_PARCELS/scale))
@@ -95,15 +114,13 @@ def prepare(build, name, scale, end, e=None, entries=None):
 
 
 def solve(case, np_=1):
-    """Run the solver; returns the wall time in seconds."""
-    start = time.time()
+    """Run the solver."""
     if np_ > 1:
         foam.run(case, "decomposePar")
         foam.run(case, "rarefiedMultiphaseFoam", np_=np_)
         foam.run(case, "reconstructPar", *foam.RECONSTRUCT_ALL)
     else:
         foam.run(case, "rarefiedMultiphaseFoam")
-    return time.time() - start
 
 
 NARROW_CELLS = 5                    # of the tutorial's 15 per side
@@ -116,12 +133,13 @@ def narrow(build=BUILD, name="narrow", entries=None):
     cell bound (a layer holds too few parcels for the layer bound:
     rmf.snider) and the case."""
     case, _ = snider.narrow_column(os.path.join(build, name), NARROW_CELLS)
+    seeded(case)
     for entry, value in (entries or {}).items():
         foam.set_entry(case, PROPS, entry, value)
     foam.run(case, "blockMesh")
     foam.run(case, "rarefiedMultiphaseInitialise")
-    seconds = solve(case)
-    print(f"-- {name}: {case} ({seconds:.0f} s)")
+    solve(case)
+    print(f"-- {name}: {case}")
     return snider.check(case, "0.6", cell_bound=True, layer_bound=False) + (case,)
 
 
@@ -138,25 +156,22 @@ def variants(mppic, full=False, build=BUILD):
             entries["subModels/NTCHardSphereCoeffs/alphaSwitch"] = REDUCED_ALPHA_SWITCH
         case = prepare(build, name, scale, 0.6, e=0.5 if name == "twoSidedE05" else None,
                        entries=entries)
-        seconds = solve(case)
-        print(f"-- {name}: {case} ({seconds:.0f} s)")
-        passed, s = snider.check(case, "0.6", cell_bound=full, heated=True)
-        s["seconds"] = seconds
-        return passed, s
+        solve(case)
+        print(f"-- {name}: {case}")
+        return snider.check(case, "0.6", cell_bound=full, heated=True)
 
     names = list(VARIANTS) if full else list(REDUCED_VARIANTS)
     with concurrent.futures.ThreadPoolExecutor(2) as pool:
         results = dict(zip(names, pool.map(run, names)))
     runs = {"twoSided": mppic, **{name: s for name, (_, s) in results.items()}}
     print("-- largest alpha from 0.1 s: layer / raw cell / averaged cell;"
-          " bed below 0.14 m at 0.6 s; solver wall time")
+          " bed below 0.14 m at 0.6 s")
     for name, s in runs.items():
         averaged = s.get("alphaMaxAveragedAll")
         print(f"{name:12s} {max(s['alphaMaxLayer'].values()):.3f}"
               f" / {s['alphaMaxCellAll']:.3f}"
               f" / {averaged if averaged is None else round(averaged, 3)}"
-              f"; {s.get('bedMean', float('nan')):.3f}"
-              f"; {s.get('seconds', float('nan')):.0f} s")
+              f"; {s.get('bedMean', float('nan')):.3f}")
     png = os.path.join(build, "sniderVariants.png")
     snider.plot(runs, png, title="Snider sedimentation: packing and collision"
                 " models (alpha(z) at 0.1, 0.15, 0.2, 0.6 s)")
@@ -171,50 +186,32 @@ def validate(full=False, build=BUILD, parallel_case=None):
     scale = 1 if full else REDUCTION
     build = os.path.join(build, "full" if full else "reduced")
 
-    def serial_run(name, end, e=None, seed=None):
-        entries = None if seed is None else {"randomSeed": seed}
-        case = prepare(build, name, scale, end, e, entries)
-        return case, solve(case)
+    def serial_run(name, end, e=None):
+        case = prepare(build, name, scale, end, e)
+        solve(case)
+        return case
 
     with concurrent.futures.ThreadPoolExecutor(2) as pool:
-        serial_job = pool.submit(serial_run, "serial", 0.6)
-        e05_job = pool.submit(serial_run, "e05", 0.6, 0.5)
-        serial, t_serial = serial_job.result()
-        e05, t_e05 = e05_job.result()
-        seeds = {(e, seed): pool.submit(serial_run, f"e{e}-seed{seed}", 0.6,
-                                        None if e == 0.85 else e, seed)
-                 for seed in RESTITUTION_SEEDS for e in (0.85, 0.5)}
-        seeds = {key: job.result()[0] for key, job in seeds.items()}
+        serial, e05 = pool.map(serial_run, ("serial", "e05"), (0.6, 0.6), (None, 0.5))
 
     if parallel_case:
-        parallel, t_parallel = parallel_case, float("nan")
+        parallel = parallel_case
     else:
         parallel = prepare(build, "parallel", scale, 0.6)
-        t_parallel = solve(parallel, np_=2)
+        solve(parallel, np_=2)
 
-    print(f"Parcels {round(FULL_PARCELS/scale)} x {FULL_WEIGHT*scale}; wall time:"
-          f" serial {t_serial:.0f} s, 2 ranks {t_parallel:.0f} s,"
-          f" e = 0.5 {t_e05:.0f} s")
+    print(f"Parcels {round(FULL_PARCELS/scale)} x {FULL_WEIGHT*scale}")
 
     checks = {}
     runs = {}
-    seconds = {"serial": t_serial, "parallel": t_parallel, "e05": t_e05}
     for name, case, end in (("serial", serial, "0.6"), ("parallel", parallel, "0.6"),
                             ("e05", e05, "0.6")):
         print(f"-- {name}: {case}")
         _, runs[name] = snider.check(case, end, cell_bound=full)
-        runs[name]["seconds"] = seconds[name]
         checks.update({f"{name}: {k}": v for k, v in runs[name]["checks"].items()})
     s, p, e = runs["serial"], runs["parallel"], runs["e05"]
-    print("-- serial against parallel, e = 0.5 against e = 0.85")
+    print("-- serial against parallel")
     checks["compare"] = snider.compare(s, p)
-    soft, sharp = [s], [e]
-    for (restitution, seed), case in seeds.items():
-        print(f"-- e = {restitution}, randomSeed {seed}: {case}")
-        ok, r = snider.check(case, "0.6", cell_bound=full)
-        checks[f"e = {restitution}, seed {seed}"] = ok
-        (soft if restitution == 0.85 else sharp).append(r)
-    checks["sharper"], w05, w085 = snider.sharper(sharp, soft)
 
     png = os.path.join(build, "sniderSedimentation.png")
     snider.plot({"serial, e = 0.85": s, "2 METIS ranks, e = 0.85": p}, png,
@@ -227,9 +224,32 @@ def validate(full=False, build=BUILD, parallel_case=None):
     ok = all(checks.values())
     print("PASS" if ok else "FAIL")
     return ok, {"checks": checks, "serial": s, "parallel": p, "e05": e,
-                "widths": (w05, w085), "seconds": (t_serial, t_parallel, t_e05),
                 "cases": {"serial": serial, "parallel": parallel, "e05": e05},
                 "pngs": (png, compare_png)}
+
+
+def restitution(build=BUILD, n=RESTITUTION_SEEDS):
+    """The restitution check (module docstring): reduced runs of e = 0.85
+    and e = 0.5 with the cloud's seeds 0 to n - 1, two at a time; returns
+    {name: passed}: each run's rmf.snider checks (no over-packing bounds:
+    reduced) and "sharper"."""
+    build = os.path.join(build, "reduced", "restitution")
+
+    def run(job):
+        e, k = job
+        case = prepare(build, f"e{e}-seed{k}", REDUCTION, 0.6, None if e == 0.85 else e, k=k)
+        solve(case)
+        print(f"-- e = {e}, cloud seed {seed(k)}: {case}")
+        return snider.check(case, "0.6", cell_bound=False)
+
+    jobs = [(e, k) for k in range(n) for e in (0.85, 0.5)]
+    with concurrent.futures.ThreadPoolExecutor(2) as pool:
+        results = dict(zip(jobs, pool.map(run, jobs)))
+    checks = {f"e = {e}, seed {k}": ok for (e, k), (ok, _) in results.items()}
+    checks["sharper"], _, _ = snider.sharper(
+        [s for (e, _), (_, s) in results.items() if e == 0.5],
+        [s for (e, _), (_, s) in results.items() if e == 0.85])
+    return checks
 
 
 def main(argv=None):
@@ -239,8 +259,12 @@ def main(argv=None):
     parser.add_argument("--parallel-case", help="finished 2-rank run to reuse")
     parser.add_argument("--variants", action="store_true",
                         help="also the grain-collision variants")
+    parser.add_argument("--restitution", action="store_true",
+                        help="also the restitution check (reduced runs over seeds)")
     args = parser.parse_args(argv)
     ok, figures = validate(args.full, args.build, args.parallel_case)
+    if args.restitution:
+        ok &= all(restitution(args.build).values())
     if args.variants:
         results, _ = variants(figures["serial"], args.full, args.build)
         ok &= all(passed for name, (passed, _) in results.items()
