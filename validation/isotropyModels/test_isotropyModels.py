@@ -16,12 +16,16 @@ direction alike: the x share of the fluctuation energy,
 falls from about 1 towards 1/3 over a few tau_c (about 20 ms here).
 Run with each model for 60 steps of 1 ms, written every 10 steps.
 Checks:
-1. at every written time the two models' f_x agree within 5 standard
-   errors of their difference.  The standard error of each f_x is
-   estimated from the parcels themselves (the spread of the per-parcel
-   terms v_x'^2 - f_x |v'|^2 over the N parcels, independent of the
-   model code); the runs draw from different numbers, so the errors add
-   in quadrature;
+1. at every written time after the start (10 to 60 ms) the two models'
+   f_x agree within Z standard errors of their difference.  The standard
+   error of each f_x is estimated from the parcels themselves (the spread
+   of the per-parcel terms v_x'^2 - f_x |v'|^2 over the N parcels,
+   independent of the model code); the runs draw from different numbers,
+   so the errors add in quadrature (conservative: both runs start from the
+   same parcels, which correlates their f_x).  The start itself is not
+   compared: both runs begin from the initialiser's identical parcels
+   (same seed, no model acted yet), so their f_x agree there by
+   construction;
 2. both relax: f_x falls at every write (from 0.98 at the start; 0.53 at
    60 ms measured), and the total fluctuation energy is kept within 1 %
    (the model's second step restores the cells' mean square; 1 %: the
@@ -30,6 +34,13 @@ Checks:
    from the averaged collision frequency, which changes as the
    distribution does (from the initial state one estimates about 22 ms;
    the fall of f_x - 1/3 measured corresponds to about 50 ms).
+
+Family-wise error: 2.5e-4 (rmf_testing.MODULE_ALPHA) over the m = 6
+comparisons of 1. (Bonferroni, Z = rmf_testing.z_limit(6) = 4.1 each);
+the checks of 2. are bounds of the model, not of noise (f_x falls by at
+least 0.04 per write, 12 times its standard error of 0.0033; measured
+2026-12-06: differences within 0.9 standard errors).  Seeds:
+initialiser rmf_testing.seed(1), cloud (both models' draws) seed(0).
 """
 
 import os
@@ -38,13 +49,15 @@ import numpy as np
 import pytest
 
 from rmf import foam
+from rmf_testing import seed, z_limit
 
 ROOT = foam.PROJECT_DIR
 BOX = os.path.join(ROOT, "validation", "grainCollisions", "granularGas")
 BUILD = os.path.join(ROOT, "build", "validation", "isotropyModels")
 PROPS = "constant/grainsProperties"
 DT, STEPS, EVERY = 1e-3, 60, 10
-N_SIGMA = 5
+WRITES = STEPS//EVERY             # compared: every write after the start
+N_SIGMA = z_limit(WRITES)
 TIME_SCALE = "{ timeScaleModel { type isotropic; alphaPacked 0.6; e 0.85; } }"
 STREAMS = ("{ plus { type box; min (0 0 0); max (0.1 0.1 0.1); d 1e-3;"
            " nParcels 10000; nParticle 1; U0 (1 0 0); sigmaU 0.1; }"
@@ -56,9 +69,11 @@ def run(model):
     case = foam.copy_setup(BOX, os.path.join(BUILD, model))
     for entry, value in [("subModels/stochasticCollisionModel", "none"),
                          ("subModels/isotropyModel", model),
-                         (f"subModels/{model}Coeffs", TIME_SCALE)]:
+                         (f"subModels/{model}Coeffs", TIME_SCALE),
+                         ("randomSeed", seed(0))]:
         foam.set_entry(case, PROPS, entry, value)
     foam.set_entry(case, "system/grainsInitialiseDict", "regions", STREAMS)
+    foam.set_entry(case, "system/grainsInitialiseDict", "randomSeed", seed(1))
     foam.set_entry(case, "system/controlDict", "deltaT", DT)
     foam.set_entry(case, "system/controlDict", "endTime", f"{STEPS*DT:.6g}")
     foam.set_entry(case, "system/controlDict", "writeControl", "timeStep")
@@ -89,14 +104,16 @@ def test_same_relaxation(runs):
     ours, theirs = runs["restartableStochastic"], runs["stochastic"]
     ok = True
     print()
-    for t in foam.times(ours):
+    times = foam.times(ours)[1:]
+    assert len(times) == WRITES, times
+    for t in times:
         fo, so, _ = share(ours, t)
         fu, su, _ = share(theirs, t)
         z = (fo - fu)/max(np.hypot(so, su), 1e-12)
         good = abs(z) < N_SIGMA
         ok = ok and good
         print(f"{'PASS' if good else 'FAIL'} t = {t}: f_x ours {fo:.4f} +- {so:.4f},"
-              f" upstream {fu:.4f} +- {su:.4f}, difference {z:+.2f} sigma (tol {N_SIGMA})")
+              f" upstream {fu:.4f} +- {su:.4f}, difference {z:+.2f} sigma (tol {N_SIGMA:.2f})")
     assert ok
 
 
