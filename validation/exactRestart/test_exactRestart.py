@@ -134,10 +134,12 @@ def ntc(dst, np_, seed=None):
 
 def dem(dst, np_, seed=None):
     """Grains, soft-sphere DEM (pairCollision, contact springs in the
-    parcels' collision records): 200 grains in a box of 1 cm under
+    parcels' collision records): 108 grains in a box of 1 cm under
     gravity, random velocities of 0.1 m/s, so that contacts last across
     the restart.  DEM draws nothing: seed (default 1) sets the grains'
-    initial positions and velocities."""
+    initial positions and velocities, so two runs of one seed are the same
+    run (validation/parallelEquivalence compares its 2-rank run with the
+    serial run of the same seed directly, not with a seed ensemble)."""
     seed = 1 if seed is None else seed
     sys.path.insert(0, os.path.join(ROOT, "validation", "demContacts"))
     import test_demContacts as box
