@@ -38,7 +38,7 @@ K = 10), 10.0 (pattern, one-sided), normal z 4.8 (initial state); the
 figures are printed.  The full mode (--long) spends MODULE_ALPHA again on
 its own four cases.  K was 6 with 1e-3 per check (t_5 6.87: 96 checks,
 a false alarm in about 9 % of the module's runs with the seeds changed);
-at the Bonferroni share t_5 would be 23.5, so K = 10 (t_9 10.8, for four
+at the Bonferroni share t_5 would be 25.2, so K = 10 (t_9 10.8, for four
 more runs per case).
 
 Reduced mode (default, for ./Alltest): fewer steps, and for supersonicCorner

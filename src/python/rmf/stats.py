@@ -29,7 +29,7 @@ solver fails it with probability alpha when the seeds change; with fixed
 seeds the outcome is reproducible): the caller gives its family-wise error
 divided by its number of checks (Bonferroni), which compare() cannot know.
 A Student quantile assumes normal statistics; at the small alpha of a
-Bonferroni share it is large for a small ensemble (K = 6: 23 for 1e-6),
+Bonferroni share it is large for a small ensemble (K = 6: 28.5 at 1e-6),
 so K sets the power.
 """
 
