@@ -21,7 +21,8 @@ Maxwellian of variance 2 theta: <c_r> = 4 sqrt(theta/pi),
    a collision event involves two parcels, so the events per step in the
    whole box are N nu dt / 2 and the measured rate per parcel is
    2 C / (N t) for C events in time t.  Noise: C is a sum of Bernoulli
-   acceptances, variance <= C (Poisson): relative sd 1/sqrt(C).  The NTC
+   acceptances, variance <= C (Poisson): relative sd 1/sqrt(C), tolerance
+   Z sd (family-wise error below).  The NTC
    count W N (N-1) .../(2V) equals the kinetic rate for the mean over
    cells because <N (N-1)> = <N>^2 for Poisson occupancy; here the
    occupancy is multinomial (fixed total), which lowers <N (N-1)> by
@@ -50,11 +51,35 @@ Maxwellian of variance 2 theta: <c_r> = 4 sqrt(theta/pi),
    every step from the log (kinetic energy, momentum, mass of the cloud:
    theta = (2 KE/M - |P/M|^2)/3); 1/sqrt(theta) = (1 + t/tau)/sqrt(theta_0)
    is fitted by least squares through the exact 1/sqrt(theta_0) of the
-   initial parcels, giving tau.  Noise: the cooling is set by the energy
-   dissipated in C collisions, each removing ~c_r^2 drawn with weight c_r:
-   relative sd sqrt(<c_r^5><c_r>/<c_r^3>^2 / C) = sqrt(1.5/C); five seeds
-   of each run scattered by 0.45 % (sd), a little more, so the tolerance
-   is 4 x max(sqrt(1.5/C), 0.0045).
+   initial parcels, giving tau.  Noise (haff_sd), from kinetic theory
+   alone: y = 1/sqrt(theta) grows at the constant rate s = 1/(tau
+   sqrt(theta_0)) whatever theta is, in steps, one per collision, each
+   removing ~c_r^2 drawn with weight c_r; so y(t) is s t plus a random
+   walk with independent increments, whose variance grows at
+   q(t) = 1.5 s^2/Gamma(t) (1.5 = <c_r^5><c_r>/<c_r^3>^2; Gamma(t) =
+   Gamma_0/(1 + t/tau) the box's collisions per second, Gamma_0 = N n
+   sigma <c_r>/2 at theta_0), i.e. Var y(t) = 1.5 s^2 (t + t^2/(2 tau))
+   /Gamma_0.  The least-squares slope sum t y/sum t^2 over the steps
+   then has the relative variance 1.5/Gamma_0 sum_ij t_i t_j (m_ij +
+   m_ij^2/(2 tau))/(sum t^2)^2, m_ij = min(t_i, t_j): 0.31 % at e = 0.9
+   (400 steps), 0.47 % at e = 0.7 (200 steps), a little above sqrt(1.5/C)
+   for the C collisions kinetic theory expects (0.30 and 0.46 %).  (Until
+   2026-12-06 a floor of 0.45 %, the scatter of five seeds of the code
+   itself, stood beside sqrt(1.5/C).)
+   The velocity distribution does not stay Maxwellian: within a few
+   collisions it relaxes to the homogeneous cooling state, whose fourth
+   cumulant a2 speeds the cooling by the factor 1 + 3 a2/16.  For this
+   collision rule a2 follows from the first Sonine approximation
+   (closure_bias: the fourth moment's collisional change balancing the
+   cooling, its collision integrals over Maxwellian pairs): a2 = -0.020 at
+   e = 0.9, +0.072 at e = 0.7, so tau errs by b = +0.38 % and -1.35 %.
+   The run starts Maxwellian, so the fitted tau's expected error lies
+   between 0 and b: the check is that err lies in [min(0, b), max(0, b)]
+   widened by Z sd each side (family-wise error below).  Measured
+   2026-12-06 on seeds outside the test's (101 to 108): e = 0.7 -0.92 %
+   mean over 8 seeds (standard error 0.17 %; -0.78 +- 0.08 % at half the
+   step, so not the step), their sd 0.47 % against haff_sd's 0.47 %;
+   e = 0.9 +0.34 +- 0.06 % over 6 seeds, sd 0.14 % against 0.31 %.
 
 3. Energy bookkeeping: with equal weights every collision turns exactly
    the kinetic energy it removes into heat of the two grains, so
@@ -69,28 +94,28 @@ Maxwellian of variance 2 theta: <c_r> = 4 sqrt(theta/pi),
    after ~15 collisions per particle every component has kurtosis 3
    (Gaussian) and the variances are equal.  Noise of a sample kurtosis of
    N Gaussian values: sd sqrt(24/N) = 0.035; of a variance ratio:
-   sqrt(4/N) = 0.014.  Tolerances 4 sd.
+   sqrt(4/N) = 0.014.  Tolerances Z sd.
 
 5. Polydisperse (e = 1): 10000 grains of 1 mm and 2500 of 2 mm (W = 1,
    m_2 = 8 m_1), started in equipartition (sigmaU_2 = sigmaU_1/sqrt(8):
    m theta equal, so the state is stationary).  Events per volume and
    time: sum over species pairs i <= j of n_i n_j sigma_ij <c_r,ij>
    (halved for i = j), sigma_ij = pi ((d_i + d_j)/2)^2, <c_r,ij> =
-   sqrt(8 (theta_i + theta_j)/pi); tolerance 4/sqrt(C) as in 1.  Momentum
+   sqrt(8 (theta_i + theta_j)/pi); tolerance Z/sqrt(C) as in 1.  Momentum
    and kinetic energy conserved to round-off (equal weights, unequal
    masses).
 
 6. Unequal weights: the same grains, half of them in parcels of W = 2
    (10000 parcels of W = 1 and 5000 of W = 2, equal real densities):
-   physically the same gas, so Haff's tau is the same (tolerance that of
-   2. times sqrt(2): the W = 2 parcels halve the independent samples of
+   physically the same gas, so Haff's tau is the same (as in 2., its sd
+   times sqrt(2): the W = 2 parcels halve the independent samples of
    half the grains), and both weight classes cool alike (sample variances
    of 3 N_c values: ratio sd sqrt(2/(3 N_1) + 2/(3 N_2)) = 0.014,
-   tolerance 4 sd).  A collision updates only one of its parcels with
+   tolerance Z sd).  A collision updates only one of its parcels with
    probability up to 1/2, so energy and momentum are conserved on average
    only: of some C/2 one-sided updates each misplaces at most ~m theta_0
    of energy and ~m sqrt(theta_0) of each momentum component, a random
-   walk of sd sqrt(C/2) times that; tolerances 4 sd, against the initial
+   walk of sd sqrt(C/2) times that; tolerances Z sd, against the initial
    kinetic energy (3/2) n V m theta_0 for the energy.
 
 7. Hybrid and validity monitor (one step): with alphaSwitch set inside
@@ -98,17 +123,26 @@ Maxwellian of variance 2 theta: <c_r> = 4 sqrt(theta/pi),
    collision, the log's NTC parcel fraction is that of the cells below,
    and the write-time report counts the cells above alphaValid.  A restart
    reads sigmaCrMax back (and it never decreases).
+
+Family-wise error: 2.5e-4 (rmf_testing.MODULE_ALPHA) over the m = 23
+comparisons against noise (STATISTICAL: the collision rates of 1., the
+stale majorant, 5. and the step guard's three runs, 6; the relaxation's
+three kurtoses and three variance ratios, 6; Haff's tau at e = 0.9 and
+0.7, 2; 6.'s tau, temperature ratio, energy and three momentum
+components, 6; the step guard's largest cell estimate, 3), Bonferroni,
+Z = rmf_testing.z_limit(23) = 4.4 sd each.  The checks to round-off are
+deterministic.  Seeds: the initialiser's and the collision model's
+randomSeed (1 in the case files) are set to rmf_testing.seed(1).
 """
 
 import os
 import re
-import time
 
 import numpy as np
 import pytest
 
 from rmf import foam
-from rmf_testing import report
+from rmf_testing import report, seed, z_limit
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 CASE = os.path.join(HERE, "granularGas")
@@ -127,28 +161,81 @@ DT = 5e-4                   # time step [s]
 MASS = RHO*np.pi*D**3/6     # one grain [kg]
 NREAL = W*N/VBOX            # real number density [1/m^3]
 SIGMA = np.pi*D**2          # cross-section of two equal grains [m^2]
+STATISTICAL = 23            # comparisons against noise (module docstring)
+Z = z_limit(STATISTICAL)
 
 
 def run_case(name, steps, entries=(), init_entries=(), before_solver=None):
     """Run a copy of the granular gas for steps steps, written at the start
-    and the end (before_solver(case): a change to the initialised case);
-    returns (case, wall time)."""
+    and the end (before_solver(case): a change to the initialised case),
+    its seeds those of the seed set (module docstring); returns the case."""
     case = foam.copy_setup(CASE, os.path.join(BUILD, name))
+    seeded(case)
     for entry, value in entries:
         foam.set_entry(case, PROPS, entry, value)
     for entry, value in init_entries:
         foam.set_entry(case, INIT, entry, value)
     foam.set_entry(case, "system/controlDict", "endTime", f"{steps*DT:.6g}")
     foam.set_entry(case, "system/controlDict", "writeInterval", steps)
-    start = time.time()
     foam.run(case, "blockMesh")
     foam.run(case, "rarefiedMultiphaseInitialise")
     if before_solver:
         before_solver(case)
     foam.run(case, "rarefiedMultiphaseFoam")
-    wall = time.time() - start
-    print(f"\n{name}: {steps} steps, {wall:.1f} s")
-    return case, wall
+    return case
+
+
+def seeded(case):
+    """The initialiser's and the collision model's seeds: seed(1)."""
+    foam.set_entry(case, INIT, "randomSeed", seed(1))
+    foam.set_entry(case, PROPS, COEFFS + "randomSeed", seed(1))
+
+
+def haff_sd(t, tau, theta0, grains=N):
+    """Relative sd of Haff's tau fitted at the times t (module docstring,
+    2.): kinetic theory's collisions of the grains at theta0 and its tau."""
+    gamma0 = grains*NREAL*SIGMA*4*np.sqrt(theta0/np.pi)/2
+    m = np.minimum.outer(t, t)
+    return float(np.sqrt(1.5/gamma0*(t @ (m + m*m/(2*tau)) @ t))/np.sum(t*t))
+
+
+def closure_bias(e, n=2000000):
+    """b: the relative error of the Maxwellian closure's tau in the
+    homogeneous cooling state of this collision rule (module docstring,
+    2.), first Sonine approximation.  Per pair of velocities v1, v2 (per-
+    component variance 1, x = v^2/2, S2(x) = x^2/2 - 5 x/2 + 15/8), the
+    rule keeps V = (v1 + v2)/2 and turns g = v1 - v2 into e |g| n, n
+    isotropic: sum v^2 changes by (e^2 - 1) g^2/2, sum v^4 by
+    2 (V^2 + e^2 g^2/4)^2 + 2 e^2 g^2 V^2/3 - 2 (V^2 + g^2/4)^2 - 2 (V.g)^2
+    (n averaged).  Their collision-rate (|g|) weighted means over
+    Maxwellian pairs, A_k, and over the Sonine term's weight S2(x1) +
+    S2(x2), B_k, give the state's <v^4>/<v^2>^2 = (5/3)(1 + a2) stationary:
+    a2 = (A_4 - 10 A_2)/(10 B_2 + 10 A_2 - B_4), the cooling faster by
+    1 + a2 B_2/A_2 (B_2/A_2 = 3/16).  The means are integrated by Monte
+    Carlo over n pairs of a fixed generator (numerical quadrature, not a
+    seed of the test: b scatters by 0.02 % between generators)."""
+    rng = np.random.default_rng(0)
+    v1, v2 = rng.standard_normal((n, 3)), rng.standard_normal((n, 3))
+    V, g = (v1 + v2)/2, v1 - v2
+    g2, V2, Vg = (g*g).sum(axis=1), (V*V).sum(axis=1), (V*g).sum(axis=1)
+    rate = np.sqrt(g2)
+    d2 = rate*(e*e - 1)*g2/2
+    d4 = rate*(2*(V2 + e*e*g2/4)**2 + 2*e*e*g2*V2/3 - 2*(V2 + g2/4)**2 - 2*Vg**2)
+    x1, x2 = (v1*v1).sum(axis=1)/2, (v2*v2).sum(axis=1)/2
+    s2 = x1*x1/2 - 5*x1/2 + x2*x2/2 - 5*x2/2 + 15/4
+    A2, B2, A4, B4 = d2.mean(), (d2*s2).mean(), d4.mean(), (d4*s2).mean()
+    a2 = (A4 - 10*A2)/(10*B2 + 10*A2 - B4)
+    return float(1/(1 + a2*B2/A2) - 1)
+
+
+def haff_ok(name, e, err, sd):
+    """report() of Haff's tau: err within [min(0, b), max(0, b)] +- Z sd."""
+    b = closure_bias(e)
+    lo, hi = min(0, b) - Z*sd, max(0, b) + Z*sd
+    return report(name, lo < err < hi,
+                  f"error {100*err:+.2f} % in [{100*lo:+.2f}, {100*hi:+.2f}] %: the closure's"
+                  f" {100*b:+.2f} % (homogeneous cooling state) or none, +- {Z:.1f} x"
+                  f" {100*sd:.3f} %, kinetic theory's sd")
 
 
 def parcels(case, t, name):
@@ -182,20 +269,20 @@ def log_series(case):
 
 @pytest.fixture(scope="module")
 def elastic():
-    case, _ = run_case("elastic", 200)
+    case = run_case("elastic", 200)
     return case
 
 
 def collision_rate(case):
     """Collisions per parcel and second over the run, kinetic theory's
     n sigma <c_r> of the initial parcels, the relative error, its
-    tolerance (4 sd of a Poisson count) and the count C."""
+    tolerance (Z sd of a Poisson count) and the count C."""
     t, collisions, _, _, _ = log_series(case)
     theta = theta_of(parcels(case, "0", "U"))
     C = collisions.sum()
     measured = 2*C/(N*t[-1])
     theory = NREAL*SIGMA*4*np.sqrt(theta/np.pi)
-    return measured, theory, measured/theory - 1, 4/np.sqrt(max(C, 1)), C
+    return measured, theory, measured/theory - 1, Z/np.sqrt(max(C, 1)), C
 
 
 def test_collision_rate(elastic):
@@ -203,7 +290,7 @@ def test_collision_rate(elastic):
     assert report(
         "collision rate (e = 1)", abs(err) < tol,
         f"{measured:.2f}/s per parcel vs n sigma <c_r> = {theory:.2f}/s, "
-        f"error {100*err:+.2f} % (tolerance {100*tol:.2f} %: 4/sqrt(C), "
+        f"error {100*err:+.2f} % (tolerance {100*tol:.2f} %: {Z:.1f}/sqrt(C), "
         f"C = {C:.0f} collisions)")
 
 
@@ -212,7 +299,7 @@ def test_stale_majorant():
     cell starts with (sigma c_r)_max = 1e-30 m^3/s, read as a restart's
     sigmaCrMax, and the model raises it to the bound of the step's pairs
     (doc/physics.md 5.2), so the collision rate over 50 steps is the
-    kinetic theory's, tolerance 4/sqrt(C) as above.  Raised by candidates
+    kinetic theory's, tolerance Z/sqrt(C) as above.  Raised by candidates
     alone (the model before 2026-12-02), the cells drew 1e-28 candidates
     per step and never collided."""
     def stale(case):
@@ -221,7 +308,7 @@ def test_stale_majorant():
                     " object sigmaCrMax.grains; }\n"
                     "dimensions [0 3 -1 0 0 0 0];\ninternalField uniform 1e-30;\n"
                     "boundaryField { \".*\" { type cyclic; } }\n")
-    case, _ = run_case("staleMajorant", 50, before_solver=stale)
+    case = run_case("staleMajorant", 50, before_solver=stale)
     with open(os.path.join(case, "log.rarefiedMultiphaseFoam")) as f:
         read = "read sigmaCrMax.grains" in f.read()
     measured, theory, err, tol, C = collision_rate(case)
@@ -260,25 +347,25 @@ def test_relaxation_to_maxwellian():
                " nParcels 10000; nParticle 1; U0 (1 0 0); sigmaU 0.3; }"
                " minus { type box; min (0 0 0); max (0.1 0.1 0.1); d 1e-3;"
                " nParcels 10000; nParticle 1; U0 (-1 0 0); sigmaU 0.3; } }")
-    case, _ = run_case("twoStreams", 300, init_entries=[("regions", streams)])
+    case = run_case("twoStreams", 300, init_entries=[("regions", streams)])
     U0 = parcels(case, "0", "U")
     U1 = parcels(case, foam.latest_time(case), "U")
     k0 = [kurtosis(U0[:, i]) for i in range(3)]
     k1 = [kurtosis(U1[:, i]) for i in range(3)]
     var1 = U1.var(axis=0)
-    tol_k = 4*np.sqrt(24/N)
-    tol_v = 4*np.sqrt(4/N)
+    tol_k = Z*np.sqrt(24/N)
+    tol_v = Z*np.sqrt(4/N)
     ok = report("two peaks at start", k0[0] < 1.5,
                 f"x kurtosis {k0[0]:.3f} (two streams: < 1.5)")
     for i, c in enumerate("xyz"):
         ok &= report(f"kurtosis {c}", abs(k1[i] - 3) < tol_k,
                      f"{k0[i]:.3f} -> {k1[i]:.3f} (Gaussian 3, tolerance "
-                     f"{tol_k:.3f}: 4 sqrt(24/N))")
+                     f"{tol_k:.3f}: {Z:.1f} sqrt(24/N))")
     ratio = var1.max()/var1.min() - 1
     ok &= report("isotropy", ratio < tol_v,
                  f"variances {var1.round(4)} (start {U0.var(axis=0).round(4)}),"
                  f" max/min - 1 = {ratio:.4f} (tolerance {tol_v:.3f}: "
-                 f"4 sqrt(4/N))")
+                 f"{Z:.1f} sqrt(4/N))")
     assert ok
 
 
@@ -291,7 +378,7 @@ HAFF = [(0.9, 400), (0.7, 200)]      # (e, steps): to theta/theta_0 ~ 0.1
 
 @pytest.mark.parametrize("e, steps", HAFF, ids=[f"e{e}" for e, _ in HAFF])
 def test_haff_cooling(e, steps):
-    case, _ = run_case(f"haff{e}", steps, entries=[(COEFFS + "e", e)])
+    case = run_case(f"haff{e}", steps, entries=[(COEFFS + "e", e)])
     t, collisions, ke, p, m = log_series(case)
     theta = (2*ke/m - (p**2).sum(axis=1)/m**2)/3
     U0 = parcels(case, "0", "U")
@@ -304,13 +391,9 @@ def test_haff_cooling(e, steps):
     tau_theory = 3*np.sqrt(np.pi)/(4*(1 - e*e)*NREAL*SIGMA*np.sqrt(theta0))
     err = tau/tau_theory - 1
     C = collisions.sum()
-    tol = 4*max(np.sqrt(1.5/C), 0.0045)
-    ok = report(
-        f"Haff tau (e = {e})", abs(err) < tol,
-        f"fitted {tau*1e3:.2f} ms vs theory {tau_theory*1e3:.2f} ms, "
-        f"error {100*err:+.2f} % (tolerance {100*tol:.2f} %: "
-        f"4 max(sqrt(1.5/C), 0.45 %), C = {C:.0f}); theta fell to "
-        f"{theta[-1]/theta0:.3f} theta_0")
+    print(f"\n    e = {e}: fitted {tau*1e3:.2f} ms vs theory {tau_theory*1e3:.2f} ms, "
+          f"C = {C:.0f}; theta fell to {theta[-1]/theta0:.3f} theta_0")
+    ok = haff_ok(f"Haff tau (e = {e})", e, err, haff_sd(t, tau_theory, theta0))
 
     # Energy: kinetic lost = heat gained (equal weights: exact)
     t_end = foam.latest_time(case)
@@ -341,10 +424,13 @@ def test_totally_inelastic():
     homogeneous cooling state carries a fourth cumulant of order 0.2
     (first Sonine estimate for classical inelastic spheres, 16/81 at
     e = 0), which speeds the cooling by several per cent; measured
-    -4.9 % (0.65 % noise) on this case, against +0.75 % and +0.71 % at
-    e = 0.9 and 0.7."""
+    -5.3 % (0.65 % noise) on this case (2026-12-06), against +0.29 % and
+    -0.71 % at e = 0.9 and 0.7.  (This collision rule's own first Sonine
+    estimate, closure_bias, gives a2 = 1.0 and -15 % at e = 0: the
+    approximation fails there, and the run spends much of its time in
+    the transient from the Maxwellian start.)"""
     e, steps = 0.0, 100
-    case, _ = run_case("inelastic0", steps, entries=[(COEFFS + "e", e)])
+    case = run_case("inelastic0", steps, entries=[(COEFFS + "e", e)])
     t, collisions, ke, p, m = log_series(case)
     theta = (2*ke/m - (p**2).sum(axis=1)/m**2)/3
     U0 = parcels(case, "0", "U")
@@ -383,7 +469,7 @@ def test_polydisperse():
              " large { type box; min (0 0 0); max (0.1 0.1 0.1); d 2e-3;"
              " nParcels 2500; nParticle 1; U0 (0 0 0);"
              f" sigmaU {1/np.sqrt(8):.15g}; }} }}")
-    case, _ = run_case("polydisperse", 200, init_entries=[("regions", mixed)])
+    case = run_case("polydisperse", 200, init_entries=[("regions", mixed)])
     t, collisions, _, _, _ = log_series(case)
     C = collisions.sum()
     U0, d0 = parcels(case, "0", "U"), parcels(case, "0", "d")
@@ -398,11 +484,11 @@ def test_polydisperse():
             rate += n[i]*n[j]*sigma*cr*(0.5 if i == j else 1)
     measured = C/(VBOX*t[-1])
     err = measured/rate - 1
-    tol = 4/np.sqrt(C)
+    tol = Z/np.sqrt(C)
     ok = report(
         "polydisperse collision rate (e = 1)", abs(err) < tol,
         f"{measured:.4g} vs {rate:.4g} events/(m^3 s), error {100*err:+.2f} "
-        f"% (tolerance {100*tol:.2f} %: 4/sqrt(C), C = {C:.0f})")
+        f"% (tolerance {100*tol:.2f} %: {Z:.1f}/sqrt(C), C = {C:.0f})")
 
     t_end = foam.latest_time(case)
     U1, d1 = parcels(case, t_end, "U"), parcels(case, t_end, "d")
@@ -424,7 +510,7 @@ def test_unequal_weights():
              " nParcels 10000; nParticle 1; U0 (0 0 0); sigmaU 1; }"
              " double { type box; min (0 0 0); max (0.1 0.1 0.1); d 1e-3;"
              " nParcels 5000; nParticle 2; U0 (0 0 0); sigmaU 1; } }")
-    case, _ = run_case("unequalWeights", 200, entries=[(COEFFS + "e", e)],
+    case = run_case("unequalWeights", 200, entries=[(COEFFS + "e", e)],
                        init_entries=[("regions", mixed)])
     t, collisions, ke, p, m = log_series(case)
     theta = (2*ke/m - (p**2).sum(axis=1)/m**2)/3
@@ -439,19 +525,16 @@ def test_unequal_weights():
     tau = a0/(np.sum(t*(1/np.sqrt(theta) - a0))/np.sum(t*t))
     tau_theory = 3*np.sqrt(np.pi)/(4*(1 - e*e)*NREAL*SIGMA*np.sqrt(theta0))
     err = tau/tau_theory - 1
-    tol = np.sqrt(2)*4*max(np.sqrt(1.5/C), 0.0045)
-    ok = report(
-        "Haff tau, unequal weights", abs(err) < tol,
-        f"fitted {tau*1e3:.2f} ms vs theory {tau_theory*1e3:.2f} ms, error "
-        f"{100*err:+.2f} % (tolerance {100*tol:.2f} %: sqrt(2) x 4 max("
-        f"sqrt(1.5/C), 0.45 %), C = {C:.0f})")
+    print(f"\n    unequal weights: fitted {tau*1e3:.2f} ms vs theory {tau_theory*1e3:.2f} ms,"
+          f" C = {C:.0f}")
+    ok = haff_ok("Haff tau, unequal weights", e, err, np.sqrt(2)*haff_sd(t, tau_theory, theta0))
 
     th = [theta_of(U1[W1 == w]) for w in (1, 2)]
     n1, n2 = (W1 == 1).sum(), (W1 == 2).sum()
-    tol_th = 4*np.sqrt(2/(3*n1) + 2/(3*n2))
+    tol_th = Z*np.sqrt(2/(3*n1) + 2/(3*n2))
     ok &= report("weight classes cool alike", abs(th[1]/th[0] - 1) < tol_th,
                  f"theta(W = 1) = {th[0]:.4f}, theta(W = 2) = {th[1]:.4f} "
-                 f"m^2/s^2 (tolerance {100*tol_th:.1f} %: 4 sd of the ratio)")
+                 f"m^2/s^2 (tolerance {100*tol_th:.1f} %: {Z:.1f} sd of the ratio)")
 
     mass = MASS
     ke0 = 0.5*mass*(W0*(U0**2).sum(axis=1)).sum()
@@ -459,16 +542,16 @@ def test_unequal_weights():
     heat = mass*CP*((W1*parcels(case, t_end, "T")).sum()
                     - (W0*parcels(case, "0", "T")).sum())
     rel = (heat - (ke0 - ke1))/ke0
-    tol_e = 4*np.sqrt(C/2)*mass*theta0/ke0
+    tol_e = Z*np.sqrt(C/2)*mass*theta0/ke0
     ok &= report("energy on average, unequal weights", abs(rel) < tol_e,
                  f"heat gained - kinetic energy lost = {100*rel:+.3f} % of "
-                 f"KE(0) (tolerance {100*tol_e:.2f} %: 4 sqrt(C/2) m theta_0)")
+                 f"KE(0) (tolerance {100*tol_e:.2f} %: {Z:.1f} sqrt(C/2) m theta_0)")
     dp = np.abs(mass*((W1[:, None]*U1).sum(axis=0)
                       - (W0[:, None]*U0).sum(axis=0))).max()
-    tol_p = 4*np.sqrt(C/2)*mass*np.sqrt(theta0)
+    tol_p = Z*np.sqrt(C/2)*mass*np.sqrt(theta0)
     ok &= report("momentum on average, unequal weights", dp < tol_p,
                  f"max |dP_i| = {dp:.2e} kg m/s (tolerance {tol_p:.2e}: "
-                 f"4 sqrt(C/2) m sqrt(theta_0))")
+                 f"{Z:.1f} sqrt(C/2) m sqrt(theta_0))")
     assert ok
 
 
@@ -484,7 +567,7 @@ def test_hybrid_and_monitor():
     # Mean alpha 0.0105 with ~2 % scatter between cells: thresholds at the
     # mean split the cells
     alpha_mean = N*W*np.pi*D**3/6/VBOX
-    case, _ = run_case("hybrid", 1, entries=[
+    case = run_case("hybrid", 1, entries=[
         (COEFFS + "alphaSwitch", f"{alpha_mean:.6g}"),
         (COEFFS + "alphaValid", f"{alpha_mean:.6g}"),
     ])
@@ -575,6 +658,7 @@ def test_step_guard(factor):
     dt = factor/nu
     steps = 20
     case = foam.copy_setup(CASE, os.path.join(BUILD, f"stepGuard{factor:g}"))
+    seeded(case)
     foam.set_entry(case, "system/controlDict", "deltaT", f"{dt:.6g}")
     foam.set_entry(case, "system/controlDict", "endTime", f"{steps*dt:.6g}")
     foam.set_entry(case, "system/controlDict", "writeInterval", steps)
@@ -590,7 +674,7 @@ def test_step_guard(factor):
     U0, U1 = parcels(case, "0", "U"), parcels(case, t_end, "U")
     rate = 2*C/(N*steps*dt)
     theory = NREAL*SIGMA*4*np.sqrt(theta_of(U0)/np.pi)
-    err, tol = rate/theory - 1, 4/np.sqrt(C)
+    err, tol = rate/theory - 1, Z/np.sqrt(C)
     dp = np.abs(U1.sum(axis=0) - U0.sum(axis=0)).max()/np.abs(U0).sum()
     dke = abs((U1**2).sum()/(U0**2).sum() - 1)
     warned = "too long for the grain collisions" in text
@@ -613,7 +697,7 @@ def test_step_guard(factor):
                  f" expected {'none' if factor < 10 else 'below 1e-5 of them, below 2'})")
     ok &= report(f"collision rate ({factor}x)", abs(err) < tol,
                  f"{rate:.2f}/s per parcel vs {theory:.2f}/s ({100*err:+.2f} %,"
-                 f" tolerance {100*tol:.2f} %: 4/sqrt(C), C = {C:.0f})")
+                 f" tolerance {100*tol:.2f} %: {Z:.1f}/sqrt(C), C = {C:.0f})")
     ok &= report(f"conservation ({factor}x)",
                  dp < 1e-12 and dke < 1e-12 and bool(np.all(np.isfinite(U1))),
                  f"|dP|/sum(m|U|) {dp:.1e}, |dKE|/KE {dke:.1e} (round-off: 1e-12)")
