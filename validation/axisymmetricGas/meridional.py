@@ -18,6 +18,7 @@ velocity).  Noise: batch means, uniformity.batch_deviation.
 import os
 
 import numpy as np
+from scipy import stats
 
 from rmf import foam
 
@@ -72,12 +73,49 @@ def binned_batches(case, bins, nbins, mass, skip):
 
 
 def compare(a, b, fields=FIELDS):
-    """Per field: the two runs' batch means, and the deviation of their
-    difference in combined standard errors sqrt(se_a^2 + se_b^2)."""
+    """Per field: the two runs' batch means, the deviation of their
+    difference in combined standard errors sqrt(se_a^2 + se_b^2), and its
+    degrees of freedom (Welch-Satterthwaite), per bin."""
     result = {}
     for name in fields:
         mean_a, se_a, _ = uf.batch_deviation(a[name], 0)
         mean_b, se_b, _ = uf.batch_deviation(b[name], 0)
         se = np.hypot(se_a, se_b)
-        result[name] = (mean_a, mean_b, se, (mean_a - mean_b) / se)
+        dof = se ** 4 / (se_a ** 4 / (len(a[name]) - 1) + se_b ** 4 / (len(b[name]) - 1))
+        result[name] = (mean_a, mean_b, se, (mean_a - mean_b) / se, dof)
     return result
+
+
+def chi2_null(a, b, dof):
+    """Null distribution of the mean over the bins of dev^2 (compare) for
+    two runs that differ by noise only: (mean, standard deviation, and the
+    scale and degrees of freedom of the scaled chi^2 matched to them).
+
+    Each dev is Student's t with dof (the bins' median), E[t^2] = dof/(dof -
+    2), Var[t^2] = 2 g with g = dof^2 (dof - 1)/((dof - 2)^2 (dof - 4)).
+    The bins' noise is correlated in space (neighbouring bins, and a mode
+    common to the domain): for correlations rho_ij of the devs the mean of
+    M of them has Var = 2 g sum_ij rho_ij^2/M^2.  rho_ij from the batches'
+    covariance of the difference of the means (C_a/B_a + C_b/B_b), each
+    rho_ij^2 less its sampling bias (1 - rho^2)^2/(B_a + B_b - 2).  The
+    distribution of the mean is taken as a scaled chi^2 with that mean and
+    variance (Satterthwaite)."""
+    cov = np.cov(a.T) / len(a) + np.cov(b.T) / len(b)
+    sd = np.sqrt(np.diag(cov))
+    rho = cov / np.outer(sd, sd)
+    m = len(sd)
+    off = rho[~np.eye(m, dtype=bool)]
+    squares = m + max((off ** 2 - (1 - off ** 2) ** 2 / (len(a) + len(b) - 2)).sum(), 0)
+    nu = float(np.median(dof))
+    mean = nu / (nu - 2)
+    g = nu * nu * (nu - 1) / ((nu - 2) ** 2 * (nu - 4))
+    var = 2 * g * squares / m ** 2
+    k = 2 * mean * mean / var
+    return mean, np.sqrt(var), mean / k, k
+
+
+def chi2_limit(a, b, dof, alpha):
+    """Upper limit of the mean of dev^2 exceeded with probability alpha
+    under chi2_null; also returns the null's mean and standard deviation."""
+    mean, sd, scale, k = chi2_null(a, b, dof)
+    return scale * stats.chi2.isf(alpha, k), mean, sd
