@@ -28,7 +28,13 @@ bed is held, not blown apart or compacted through its limit.
   erupts nor throws grains up.
 eps = 1e-12 makes the stress at and above alpha_cp some 1e10 times
 larger than at eps = 1e-7; the limiter of Snider's eqs. 39-41 caps the
-velocity correction a parcel receives, so the outcome must be the same.
+velocity correction a parcel receives, so both runs must meet the same
+expected outcome.  Each run is checked against it on its own; the two
+runs are not compared with each other.
+
+Not a statistical comparison: the bounds are those of the Snider
+validation (rmf.snider), each run one realisation of the case files'
+seeds.
 """
 
 import os
