@@ -27,7 +27,6 @@ Expected, each checked:
 
 import os
 import resource
-import shutil
 import signal
 import subprocess
 

@@ -275,7 +275,7 @@ def test_two_ranks_dem():
     case = make("dem", "metis", seed)
     decompose(case, "metis")
     log = foam.run_solver(case, np_=2)
-    print(f"\ndem, 2 ranks (metis) against the serial run of the same seed:")
+    print("\ndem, 2 ranks (metis) against the serial run of the same seed:")
     failures = structure(serial, case, log)
 
     want, got = observables(serial), observables(case)
