@@ -1,13 +1,20 @@
 #!/usr/bin/python3
 # rarefiedMultiphaseFoam. Copyright (C) 2026 The rarefiedMultiphaseFoam authors
 # SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
-"""Makes reference.json: the observables (test_apolloScaledPSI.observables)
-of the test's reduced run, serial, for randomSeed 2..K+1, the ensemble
-the test's prediction intervals come from.  The test's own runs use seed
-1, outside the ensemble, so that a run is checked against runs it is
-independent of.  A changed reference is a reviewed commit with a reason.
+"""Makes the stored ensembles of test_apolloScaledPSI.py:
+- reference.json: the observables (test_apolloScaledPSI.observables) of
+  the test's reduced run, serial, for randomSeed 2..K+1;
+- reference-vibration.json (--vibration): the bend mode's mean level near
+  the surface (test_apolloScaledPSI.bend_level) of the run with vibration,
+  serial (the test's run is on 2 ranks: the parallel code is tested
+  against serial runs), for randomSeed 2..K+1.
+The test's prediction intervals come from them.  The test's own runs use
+seed 1 of the suite's seed set (1, 501, ...), outside the ensembles, so
+that a run is checked against runs it is independent of.  A changed
+reference is a reviewed commit with a reason.
 
-Usage (after . etc/bashrc): make_reference.py [K]   (default 8)
+Usage (after . etc/bashrc): make_reference.py [--vibration] [K]
+(default K: 24 serial runs, 8 runs with vibration)
 """
 
 import json
@@ -15,23 +22,42 @@ import os
 import sys
 from concurrent.futures import ThreadPoolExecutor
 
-import test_apolloScaledPSI as t
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(HERE, "..", "..", "..", "testing"))
+sys.path.insert(0, os.path.join(HERE, "..", "..", "..", "src", "python"))
+
+import test_apolloScaledPSI as t  # noqa: E402
 
 
 def main():
-    K = int(sys.argv[1]) if len(sys.argv) > 1 else 8
+    args = sys.argv[1:]
+    vibration = "--vibration" in args
+    args = [a for a in args if a != "--vibration"]
+    K = int(args[0]) if args else 8 if vibration else 24
     seeds = range(2, K + 2)
-    cases = [t.prepare(os.path.join("reference", f"seed{k}"), seed=k) for k in seeds]
-    with ThreadPoolExecutor(max_workers=2) as pool:
-        cases = list(pool.map(t.run, cases))
+    if vibration:
+        cases = [t.prepare(os.path.join("reference", f"vibration{k}"), seed=k,
+                           steps=t.STEPS_VIBRATION) for k in seeds]
+        with ThreadPoolExecutor(max_workers=2) as pool:
+            cases = list(pool.map(lambda c: t.run(c, vibration=True), cases))
+        runs = [{"bend level near the surface": t.bend_level(c)[0]} for c in cases]
+        what = (f"the reduced run with vibration of test_apolloScaledPSI.py "
+                f"({t.STEPS_VIBRATION} steps), serial")
+        name = "reference-vibration.json"
+    else:
+        cases = [t.prepare(os.path.join("reference", f"seed{k}"), seed=k) for k in seeds]
+        with ThreadPoolExecutor(max_workers=2) as pool:
+            cases = list(pool.map(t.run, cases))
+        runs = [t.observables(c) for c in cases]
+        what = (f"the reduced run of test_apolloScaledPSI.py (hybrid, demo settings, "
+                f"{t.STEPS} steps, {t.PARCELS} parcels), serial")
+        name = "reference.json"
     ref = {
-        "origin": f"rarefiedMultiphaseFoam, the reduced run of test_apolloScaledPSI.py "
-                  f"(hybrid, demo settings, {t.STEPS} steps, {t.PARCELS} parcels), "
-                  f"serial, randomSeed {seeds[0]}..{seeds[-1]}",
+        "origin": f"rarefiedMultiphaseFoam, {what}, randomSeed {seeds[0]}..{seeds[-1]}",
         "time": t.foam.latest_time(cases[0]),
-        "runs": [t.observables(c) for c in cases],
+        "runs": runs,
     }
-    with open(os.path.join(t.HERE, "reference.json"), "w") as f:
+    with open(os.path.join(t.HERE, name), "w") as f:
         json.dump(ref, f, indent=2)
     print(json.dumps(ref, indent=2))
 

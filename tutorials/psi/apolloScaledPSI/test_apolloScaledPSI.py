@@ -29,9 +29,10 @@ Checks (each able to fail):
   (the radial weighting's), out = the sum over the patches, no "lost
   away from patches", serial and parallel.
 - Serial against parallel: both insertion counts within the number of
-  nozzle faces of each other (each is within it of the expectation); the
-  simulators present agree within 3 % (independent random streams:
-  measured 20 295 / 20 291, 0.02 %; 1.8 % on the full demo at 40 us).
+  nozzle faces of each other (each is within it of the expectation).
+  (The simulators present, once checked within 3 % where the seeds
+  spread by 0.7 %, are among the observables below, compared within the
+  ensemble's own spread.)
 - The jet acts on the layer: the parcels under the nozzle (r < 8.1 mm)
   have a mean velocity toward the wall (+x) and those at 8.1-24 mm a mean
   radial velocity outward, each above 5 standard errors of the parcels'
@@ -43,16 +44,16 @@ Checks (each able to fail):
   density and velocity next to the surface under the nozzle, the
   simulators present): the serial run
   (seed 1) and the 2-rank run each within the prediction interval of a
-  stored ensemble of serial runs with seeds 2..9 (reference.json, made by
-  make_reference.py; Student's t at 1e-3 two-sided), and serial against
+  stored ensemble of serial runs with seeds 2..25 (reference.json, made
+  by make_reference.py; Student's t with 23 degrees of freedom at the
+  module's family-wise error), and serial against
   parallel observable by observable within t sd sqrt(2), sd the
-  ensemble's spread.  The grains' push under the nozzle is 0.1525 m/s
-  with a spread of 2.5 % between seeds: a push 14 % off fails (a ten-fold
-  one passed the direction check alone).  Measured: serial +0.02 sd,
-  2-rank +1.93 sd; the largest of all, the 2-rank gas density near the
-  surface, +4.0 sd (limit 5.7).  Five more 2-rank seeds (2..6) agree with
-  the serial ensemble in mean and spread (push 0.1524 m/s, spread 3.9 %;
-  density 3.122e22 against 3.136e22, 0.7 % against 0.6 %).
+  ensemble's spread.  The grains' push under the nozzle is 0.152 m/s
+  with a spread of 5.9 % between the 24 seeds (the former 8 seeds showed
+  2.8 %: too few to know the tail, and at t_7 the family-wise limit
+  would have been 10.8 sd): a push 35 % off fails (a ten-fold one passed
+  the direction check alone).  Measured (2026-12-06): serial within
+  1.35 sd, 2-rank within 0.72 sd of the reference (limit 5.6 sd).
   The first ensemble found a fault of seeding: the grain cloud's own
   stream (the isotropy's draws) was seeded with the processor number
   only, so serial seeds redrew the same kicks and spread 1.1 % in the
@@ -75,15 +76,30 @@ Checks (each able to fail):
   sqrt(a (1 + a)/N) the noise of the mean of N geometric levels.  (Not
   below the local translational temperature: by the cold surface the
   vibration, slower to relax, stays hotter than the translation; the
-  demo at 40-100 us measures 959 K against 890 K.)
-  Measured: 0.0921 +- 0.0022 (928 K) between 0.0134 and 0.8706; the
-  account 245 467 in, 42 681 simulators with 3 levels each.
+  demo at 40-100 us measures 959 K against 890 K.)  Those bounds are
+  physics' limits, far apart (0.0134 and 0.8706; measured 0.0921 +-
+  0.0022, 928 K); how far the vibration has relaxed is checked against
+  a stored ensemble of the same run, serial, with seeds 2..9
+  (reference-vibration.json, make_reference.py --vibration): the level
+  within its prediction interval (t at the module's family-wise error,
+  as the observables; the ensemble: 0.0870, sd 0.0060, so 0.087 +-
+  0.069).
 - The crater settings (settings/crater, the main job) for their first
   20 us on 2 ranks, 5000 parcels (about 100 s): the nozzle flux and both
   accounts as above, the transit criterion (simulators cross about one
   cell per step at most, test_crater_transit) and the layer pushed down
   under the nozzle by more than 3 sigma; with --long the whole 100 us
   (about 10 minutes), which must erode the layer (test_crater_erodes).
+
+Family-wise error (testing/README.md): rmf_testing.MODULE_ALPHA = 2.5e-4,
+shared by the 19 prediction intervals against the stored ensembles
+(COMPARISONS; Bonferroni: t_23 = 5.5 for the observables, t_7 = 10.8
+for the vibration's level).  The other checks are exact (counts,
+accounts, the flux within the faces' rounding) or look for an effect
+many times its noise (the layer pushed: 5 se against a measured 8-30 se;
+the crater's drop: 3 sigma against 61 sigma), whose chance of failing
+a correct build is far below the budget.  Seeds: rmf_testing.seed(1)
+(./Alltest --seed-set N).
 """
 
 import json
@@ -97,6 +113,7 @@ import numpy as np
 import pytest
 from scipy import special, stats
 
+import rmf_testing
 from rmf import foam
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -117,9 +134,11 @@ T_GRAINS = 200.0                    # grains' initial temperature [K]
 SEEDED = ("constant/dsmcProperties", "constant/grainsProperties",
           "system/grainsInitialiseDict", "settings/hybrid")
 
-# Prediction interval of a run against the reference ensemble of K runs:
-# Student's t at two-sided 1e-3 with K - 1 degrees of freedom
-ALPHA = 1e-3
+# The module's family-wise error (testing/README.md): rmf_testing's
+# MODULE_ALPHA shared (Bonferroni) by the prediction intervals against the
+# stored ensembles: 6 observables for the serial run, for the 2-rank run
+# and for their difference, and the vibration's level
+COMPARISONS = 19
 
 
 def entry(case, path, key):
@@ -132,14 +151,18 @@ def entry(case, path, key):
     return values if len(values) > 1 else values[0]
 
 
-def prepare(name, seed=1, steps=STEPS, writes=2, max_imbalance=None,
+def prepare(name, seed=None, steps=STEPS, writes=2, max_imbalance=None,
             settings="demo", parcels=PARCELS):
     """The reduced case in build/tutorials/apolloScaledPSI/<name>, every
-    randomSeed of its files (gas, grain fill, NTC, coupling) set to seed,
+    randomSeed of its files (gas, grain fill, NTC, coupling) set to seed
+    (None: seed 1 of the suite's seed set, outside the stored ensembles),
     run for steps with writes evenly spaced writes; re-balanced at writes
-    whose imbalance exceeds max_imbalance (None: never, one segment); the
-    settings file's layer of parcels parcels (None: the file's)."""
+    whose imbalance exceeds max_imbalance (None: never, one segment), the
+    imbalance and the costs counted (loadBalance measure work, so that no
+    result depends on the machine's timings); the settings file's layer
+    of parcels parcels (None: the file's)."""
     case = os.path.join(BUILD, name)
+    seed = rmf_testing.seed(1) if seed is None else seed
     if os.path.exists(case):
         shutil.rmtree(case)
     shutil.copytree(HERE, case, ignore=shutil.ignore_patterns(
@@ -158,6 +181,10 @@ def prepare(name, seed=1, steps=STEPS, writes=2, max_imbalance=None,
                     r"(maxImbalance\s+)[^;]+;",
                     rf"\g<1>{max_imbalance};" if max_imbalance
                     else r"// \g<0>")
+    # Costs from counted work, not CPU time: the same re-balancing stops and
+    # decompositions on any machine, under any load (loadBalance.H)
+    foam.substitute(os.path.join(case, "system/controlDict"),
+                    r"(maxImbalance[^\n]*\n)", r"\g<1>    measure         work;\n")
     # (foamDictionary -set rewrites the file with hybridDust's $MPPICDust
     # expanded: set both)
     for dust in ("MPPICDust", "hybridDust") if parcels else ():
@@ -212,15 +239,16 @@ def observables(case):
     }
 
 
-def reference():
-    """The stored ensemble (make_reference.py): the file's dictionary,
-    {observable: array of runs}, and Student's t at ALPHA for its K - 1
-    degrees of freedom."""
-    with open(os.path.join(HERE, "reference.json")) as f:
+def reference(name="reference.json"):
+    """A stored ensemble (make_reference.py): the file's dictionary,
+    {observable: array of runs}, and Student's t for its K - 1 degrees of
+    freedom at the module's family-wise error (COMPARISONS, Bonferroni,
+    two-sided)."""
+    with open(os.path.join(HERE, name)) as f:
         ref = json.load(f)
     names = ref["runs"][0].keys()
     values = {k: np.array([run_[k] for run_ in ref["runs"]]) for k in names}
-    return ref, values, stats.t.ppf(1 - ALPHA/2, len(ref["runs"]) - 1)
+    return ref, values, rmf_testing.t_limit(len(ref["runs"]) - 1, COMPARISONS)
 
 
 @pytest.fixture(scope="module")
@@ -276,12 +304,13 @@ def test_nozzle_flux(runs):
         check_nozzle_flux(name, case)
 
 
-def check_accounts(name, case):
-    """The gas and grain accounts of a run (module docstring): every
-    segment's log free of losses, the accounts' totals since the start
-    (continued from segment to segment) from the last one, the nozzle's
-    insertions summed over the segments."""
-    logs = segments(case)
+def check_accounts(name, case, logs=None):
+    """The gas and grain accounts of a run (module docstring) at the end of
+    the last of logs (default: all the run's segments): every segment's
+    log free of losses, the accounts' totals since the start (continued
+    from segment to segment) from the last one, the nozzle's insertions
+    summed over the segments."""
+    logs = logs or segments(case)
     for log in logs:
         with open(log) as f:
             assert "lost away from patches" not in f.read(), (name, log)
@@ -291,7 +320,7 @@ def check_accounts(name, case):
     # the nozzle's count starts again in each segment
     inserted = sum(last(seg, "Simulators inserted through nozzle")[1] for seg in logs)
     gas_in = last(log, "Simulators in / out since start")[0]
-    assert gas_in == inserted, (name, gas_in, inserted)
+    assert gas_in == inserted, (name, log, gas_in, inserted)
     with open(os.path.join(case, "log.rarefiedMultiphaseInitialise")) as f:
         initial = float(re.search(r"Solid parcels added: (\d+)", f.read()).group(1))
     present = last(log, "Parcels present")[0]
@@ -303,11 +332,12 @@ def check_accounts(name, case):
     escaped = sum(float(v) for v in re.findall(
         r"^\s*out through \S+ = (\S+)", block, re.M))
     ok = present == initial + p_in - out + cloned - deleted and out == escaped
-    print(f"\n{'PASS' if ok else 'FAIL'} apolloScaledPSI {name} accounts: "
-          f"gas in {gas_in:.0f} = inserted {inserted:.0f}; parcels {present:.0f} "
-          f"= {initial:.0f} + {p_in:.0f} in - {out:.0f} out + {cloned:.0f} cloned "
-          f"- {deleted:.0f} deleted (radial weighting), no loss")
+    print(f"\n{'PASS' if ok else 'FAIL'} apolloScaledPSI {name} accounts "
+          f"({os.path.basename(log)}): gas in {gas_in:.0f} = inserted {inserted:.0f}; "
+          f"parcels {present:.0f} = {initial:.0f} + {p_in:.0f} in - {out:.0f} out "
+          f"+ {cloned:.0f} cloned - {deleted:.0f} deleted (radial weighting), no loss")
     assert ok
+    return inserted
 
 
 def test_accounts(runs):
@@ -316,17 +346,17 @@ def test_accounts(runs):
 
 
 def test_serial_parallel(runs):
+    """Both insertion counts within the number of nozzle faces of each
+    other (each is within it of the expectation).  (The simulators present
+    are compared in test_serial_parallel_observables, within the
+    ensemble's noise.)"""
     s, p = (solver_log(runs[k]) for k in ("serial", "parallel"))
     ins_s = last(s, "Simulators inserted through nozzle")[1]
     ins_p = last(p, "Simulators inserted through nozzle")[1]
-    n_s = last(s, "Simulators present")[0]
-    n_p = last(p, "Simulators present")[0]
-    dev = abs(n_p - n_s)/n_s
     faces = expected_insertions(runs["serial"])[1]
-    ok = abs(ins_s - ins_p) < faces and dev < 0.03
+    ok = abs(ins_s - ins_p) < faces
     print(f"\n{'PASS' if ok else 'FAIL'} apolloScaledPSI serial/parallel: inserted "
-          f"{ins_s:.0f} / {ins_p:.0f}, simulators present {n_s:.0f} / {n_p:.0f} "
-          f"({100*dev:.2f} %, tolerance 3 %)")
+          f"{ins_s:.0f} / {ins_p:.0f} (tolerance {faces})")
     assert ok
 
 
@@ -364,7 +394,9 @@ def test_against_reference(runs, observed):
     """The serial run (seed 1) and the 2-rank run against the stored
     ensemble of serial runs with seeds 2..K+1 (reference.json): each
     observable within the prediction interval
-        |x - mean| <= t(1 - ALPHA/2, K - 1) sd sqrt(1 + 1/K),
+        |x - mean| <= t sd sqrt(1 + 1/K),
+    t Student's quantile with K - 1 degrees of freedom at two-sided
+    MODULE_ALPHA/COMPARISONS,
     sd the ensemble's spread, measured without the run under test (and
     without the parallel code).  A push of the jet on the grains twice
     the reference's falls outside (the figures printed give the margin)."""
@@ -386,8 +418,8 @@ def test_against_reference(runs, observed):
 
 def test_serial_parallel_observables(observed):
     """Serial against 2 ranks, observable by observable: the difference of
-    two independent runs within t(1 - ALPHA/2, K - 1) sd sqrt(2), sd the
-    reference ensemble's spread."""
+    two independent runs within t sd sqrt(2), sd the reference ensemble's
+    spread, t as in test_against_reference."""
     _, values, t_crit = reference()
     s, p = observed["serial"], observed["parallel"]
     failures = []
@@ -468,12 +500,12 @@ def processor_field(case, proc, time, name):
 def test_rebalance_accounts(rebalanced):
     """Re-balancing (module docstring): the run stops at both earlier
     writes and reaches the end; the accounts continue from segment to
-    segment (each segment's totals since the start are the sums over the
-    segments so far: the gas's in is the nozzle's insertions so far, the
-    parcels present are the initial ones less all that went out); the
-    segments' insertions add up to the nozzle's flux (each segment's
-    PatchInflow starts its fractional carry afresh: tolerance the number
-    of faces per segment)."""
+    segment (check_accounts at the end of each segment: the totals since
+    the start are the sums over the segments so far, the parcels present
+    the initial ones plus what came in, was cloned or deleted by the
+    radial weighting, less all that went out); the segments' insertions
+    add up to the nozzle's flux (each segment's PatchInflow starts its
+    fractional carry afresh: tolerance the number of faces per segment)."""
     logs = segments(rebalanced)
     stopped = []
     for log in logs:
@@ -483,18 +515,8 @@ def test_rebalance_accounts(rebalanced):
     end = STEPS_REBALANCED*entry(rebalanced, "system/controlDict", "deltaT")
     assert abs(float(foam.latest_time(rebalanced)) - end) < 1e-12
 
-    with open(os.path.join(rebalanced, "log.rarefiedMultiphaseInitialise")) as f:
-        initial = float(re.search(r"Solid parcels added: (\d+)", f.read()).group(1))
-    inserted = 0.0
-    for log in logs:
-        with open(log) as f:
-            text = f.read()
-        assert "lost away from patches" not in text, log
-        inserted += last(log, "Simulators inserted through nozzle")[1]
-        assert last(log, "Simulators in / out since start")[0] == inserted, log
-        out = last(log, "Parcels in / out since start")[1]
-        now = last(log, "Parcels present")[0]
-        assert now == initial - out, (log, now, initial, out)
+    for k in range(len(logs)):
+        inserted = check_accounts("re-balanced", rebalanced, logs[:k + 1])
 
     expected, faces = expected_insertions(rebalanced, STEPS_REBALANCED)[:2]
     ok = abs(inserted - expected) < faces*len(logs)
@@ -521,42 +543,79 @@ def test_rebalance_state(rebalanced):
 
 
 def test_rebalance_cost(rebalanced):
-    """cellCost: summed over the cells of both processors it is the
-    compute time the log reports for the interval (2 x mean), within
-    -1 % and +2 % (cells under 1 % of the mean cell are raised to it: at
-    most +1 %; the phase time the cells' timers exceeded in the last step,
-    carried to the next, and the log's rounding: well under 1 %; measured
-    +0.5 %); and decomposePar split the last segment's cells by the costs
-    of the step's parts (method phaseBalanced): each processor's sum of the
-    decomposed cellCostGasSimulators, cellCostGasCollisions,
-    cellCostCoupling and cellCostGrains within 4 % of the mean (the
-    method's imbalance 1.03, and a margin for the integer weights)."""
+    """The costs per cell, counted (loadBalance measure work: no clock),
+    in the last segment, which ran one write interval: summed over both
+    processors' cells, cellCostGasSimulators is the simulators present
+    summed over the interval's steps (the gas's work is one move per
+    simulator per step) and cellCostGrains the parcels present summed
+    likewise, both exactly (the log's per-step "Simulators present" and
+    "Parcels present", after the step); cellCost, their sum with the
+    candidates' and the coupling's, is the counted work the log's balance
+    line gives (2 x mean) within 0 and +1 % (cells under 1 % of the mean
+    cell are raised to it: at most +1 %; and the log's 6 digits); and
+    decomposePar split the last segment's cells by the parts' costs
+    (method phaseBalanced): each processor's sum of the decomposed
+    cellCostGasSimulators, cellCostGasCollisions, cellCostCoupling and
+    cellCostGrains within 4 % of the mean (the method's imbalance 1.03,
+    and a margin for the integer weights)."""
     logs = segments(rebalanced)
     t = foam.latest_time(rebalanced)
-    total = sum(processor_field(rebalanced, p, t, "cellCost").sum() for p in (0, 1))
+    steps = STEPS_REBALANCED//3
+
+    def summed(name, time):
+        return [processor_field(rebalanced, p, time, name).sum() for p in (0, 1)]
+
     with open(logs[-1]) as f:
-        mean = float(re.findall(r"Load balance since the last write: compute time "
-                                r"per processor max/mean = \S+ \(max \S+ s, mean (\S+) s",
-                                f.read())[-1])
+        mean = float(re.findall(r"Load balance since the last write: counted work "
+                                r"per processor max/mean = \S+ \(max \S+, mean (\S+) "
+                                r"simulator moves", f.read())[-1])
+    counted = {name: sum(summed(name, t)) for name in
+               ("cellCost", "cellCostGasSimulators", "cellCostGrains")}
+    logged = {"cellCostGasSimulators": "Simulators present",
+              "cellCostGrains": "Parcels present"}
+    present = {name: sum(v[0] for v in foam.log_values(logs[-1], label)[-steps:])
+               for name, label in logged.items()}
     start = min((d for d in os.listdir(os.path.join(rebalanced, "processor0"))
                  if re.fullmatch(r"[0-9.eE+-]+", d)), key=float)
     splits = {}
     for name in ("cellCostGasSimulators", "cellCostGasCollisions", "cellCostCoupling",
                  "cellCostGrains"):
-        shares = [processor_field(rebalanced, p, start, name).sum() for p in (0, 1)]
+        shares = summed(name, start)
         splits[name] = max(shares)/np.mean(shares)
-    ok = 0.99 <= total/(2*mean) <= 1.02 and max(splits.values()) <= 1.04
-    print(f"\n{'PASS' if ok else 'FAIL'} apolloScaledPSI cellCost: {total:.3f} s in the "
-          f"cells against {2*mean:.3f} s logged; decomposition by the phases' costs "
-          f"from t = {start}: processors' shares max/mean "
-          + ", ".join(f"{k} {v:.4f}" for k, v in splits.items()))
+    ratio = counted["cellCost"]/(2*mean)
+    ok = (1 - 1e-5 <= ratio <= 1.01 + 1e-5
+          and all(counted[k] == present[k] for k in logged)
+          and max(splits.values()) <= 1.04)
+    print(f"\n{'PASS' if ok else 'FAIL'} apolloScaledPSI cellCost (counted): "
+          f"{counted['cellCost']:.6g} in the cells against {2*mean:.6g} logged "
+          f"(ratio {ratio:.5f}); "
+          + ", ".join(f"{k} {counted[k]:.0f} against {present[k]:.0f} present over "
+                      f"{steps} steps" for k in logged)
+          + f"; decomposition by the parts' costs from t = {start}: processors' "
+          "shares max/mean " + ", ".join(f"{k} {v:.4f}" for k, v in splits.items()))
     assert ok
+
+
+def run_vibration(name, seed=None):
+    """The reduced case with vibration (Allrun -vibration) on 2 ranks, run
+    for STEPS_VIBRATION steps."""
+    return run(prepare(name, seed=seed, steps=STEPS_VIBRATION), parallel=True,
+               vibration=True)
+
+
+def bend_level(case):
+    """The bend mode's mean level over the simulators within 2 mm of the
+    surface under the nozzle at the last time, and their number."""
+    base = os.path.join(case, foam.latest_time(case), "lagrangian", "dsmc")
+    pos = foam.read_positions(os.path.join(base, "positions"))
+    bend = foam.read_list(os.path.join(base, "vibLevel0"))
+    near = (np.hypot(pos[:, 1], pos[:, 2]) < LIP) & (pos[:, 0] > SURFACE - 0.002)
+    return float(bend[near].mean()), int(near.sum())
 
 
 def test_vibration():
     """Allrun -vibration on 2 ranks (module docstring, last item)."""
-    case = run(prepare("vibration", steps=STEPS_VIBRATION), parallel=True,
-               vibration=True)
+    case = run_vibration("vibration")
     log = solver_log(case)
     with open(log) as f:
         text = f.read()
@@ -568,14 +627,12 @@ def test_vibration():
     n_sim = foam.list_size(os.path.join(base, "U"))
     sizes = [foam.list_size(os.path.join(base, f"vibLevel{k}")) for k in range(3)]
 
-    # The bend mode's mean level over the simulators within 2 mm of the
-    # surface under the nozzle, against its level at the exit temperature
+    # The bend mode's mean level near the surface under the nozzle,
+    # against its level at the exit temperature and at the stagnation
+    # temperature, and against the stored ensemble of seeds
     theta = entry(case, "constant/gasVibration",
                   "moleculeProperties/H2O/vibrationalModes/bend/temperature")
-    pos = foam.read_positions(os.path.join(base, "positions"))
-    bend = foam.read_list(os.path.join(base, "vibLevel0"))
-    near = (np.hypot(pos[:, 1], pos[:, 2]) < LIP) & (pos[:, 0] > SURFACE - 0.002)
-    a, n = bend[near].mean(), near.sum()
+    a, n = bend_level(case)
     sigma = math.sqrt(a*(1 + a)/n)              # geometric levels' variance
     T_exit = entry(case, "constant/dsmcProperties", "PatchInflowCoeffs/nozzle/T")
     U_exit = entry(case, "constant/dsmcProperties", "PatchInflowCoeffs/nozzle/U")[0]
@@ -585,14 +642,20 @@ def test_vibration():
     def level(T):
         return 1/math.expm1(theta/T)
     T_bend = theta/math.log1p(1/a)
+    ref, values, t_crit = reference("reference-vibration.json")
+    assert ref["time"] == t, "reference made at another time"
+    levels = values["bend level near the surface"]
+    tol = t_crit*levels.std(ddof=1)*math.sqrt(1 + 1/len(levels))
     ok = (gas_in == inserted and sizes == [n_sim]*3
-          and a - level(T_exit) > 5*sigma and level(T_0) - a > 5*sigma)
+          and a - level(T_exit) > 5*sigma and level(T_0) - a > 5*sigma
+          and abs(a - levels.mean()) <= tol)
     print(f"\n{'PASS' if ok else 'FAIL'} apolloScaledPSI with vibration, 2 ranks: gas in "
           f"{gas_in:.0f} = inserted {inserted:.0f}; levels of {sizes} simulators "
           f"({n_sim:.0f} present); near the surface ({n} simulators) the bend's mean "
           f"level {a:.4f} +- {sigma:.4f} (T {T_bend:.0f} K) between {level(T_exit):.4f} "
           f"at the exit's {T_exit:g} K and {level(T_0):.4f} at the stagnation "
-          f"temperature {T_0:.0f} K")
+          f"temperature {T_0:.0f} K, and within {tol:.4f} of the reference "
+          f"{levels.mean():.4f} ({len(levels)} seeds, {(a - levels.mean())/levels.std(ddof=1):+.2f} sd)")
     assert ok
 
 
