@@ -62,7 +62,7 @@ Tolerances and where they come from:
   uncertainty about the difference.  Measured (2026-12-06, ./Alltest
   --long, seeds 0 to 7): e = 0.85 8.12, 8.33, 8.08, 8.21, 9.10, 9.08,
   8.15, 8.90 mm, e = 0.5 7.10, 6.60, 6.66, 7.53, 6.89, 7.71, 7.27,
-  7.29 mm: means 8.50 and 7.13 mm, 6.5 standard errors apart.
+  7.29 mm: means 8.50 and 7.13 mm, 6.4 standard errors apart.
   At 0.2 s the bed surface does not resolve it at all: widths (from 0.9
   alphaPacked above the top packed layer to alpha 0.05) 12.85, 12.89,
   12.99, 12.91 mm for e = 0.85 and 12.90, 12.86, 12.68, 12.96 mm for
