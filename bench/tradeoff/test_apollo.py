@@ -3,7 +3,12 @@
 """The apolloPSI scene of the speed-accuracy study (apollo.py): its
 --quick study (apollo.QUICK settings, 20 us of the scaled Apollo PSI
 demo, one seed; 2.5-3 minutes), run as tradeoff.py apolloPSI --quick
-does (apollo.study, then tradeoff.write_outputs).
+does (apollo.study, then tradeoff.write_outputs).  With ./Alltest --long
+only: it measures the study (a benchmark, bench/), and the physics it
+checks on the way, the jet's push on the layer and the inflow, the
+default suite checks in test_apolloScaledPSI's reduced runs; at 165 s
+it was the suite's slowest test (the suite's 35-minute budget,
+testing/README.md).
 
 Checks of the quick study (each able to fail; measured 2026-12-03 with
 seed 1):
@@ -25,6 +30,7 @@ import os
 import sys
 
 import numpy as np
+import pytest
 
 from rmf_testing import report
 
@@ -35,6 +41,7 @@ import apollo  # noqa: E402
 import tradeoff  # noqa: E402
 
 
+@pytest.mark.long
 def test_apollo_quick():
     result = apollo.study(True, 1)
     tradeoff.write_outputs("apolloPSI", **result)

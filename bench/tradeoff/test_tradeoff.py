@@ -2,7 +2,11 @@
 # SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
 """The speed-accuracy driver (tradeoff.py): its Pareto front and curve
 error against hand-worked cases, and the erosion box's --quick study
-(0.05 s of plume, one seed; about 2.5 minutes).
+(0.05 s of plume, one seed; about 1.5 minutes; with ./Alltest --long
+only: it measures the study's settings, a benchmark, while the erosion
+box's physics is checked in the default suite by
+tutorials/psi/regolithErosionBox's reduced run and validation/
+demContacts; the suite's 35-minute budget, testing/README.md).
 
 Checks of the quick study (each able to fail; the reference's own row,
 cost 1 and errors 0 by construction, is not checked: it could not fail):
@@ -53,6 +57,7 @@ import subprocess
 import sys
 
 import numpy as np
+import pytest
 from scipy import integrate
 
 from rmf_testing import report
@@ -82,6 +87,7 @@ def test_curve_error():
                   f"{e:.5f} vs sqrt(1/3) = {np.sqrt(1/3):.5f}")
 
 
+@pytest.mark.long
 def test_erosion_box_quick():
     subprocess.run([sys.executable, os.path.join(HERE, "tradeoff.py"), "erosionBox",
                     "--quick"], check=True, stdout=subprocess.DEVNULL)
