@@ -2,9 +2,10 @@
 # SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
 """Test support shared by the tests under applications/test, tutorials/
 and validation/ (on sys.path through the top-level conftest.py): helpers
-that assert or make bad input, which have no place in the rmf package."""
+that assert or make bad input, and the seeds and statistical limits of the
+suite's false-alarm budget (testing/README.md), which have no place in the
+rmf package."""
 
-import math
 import os
 import re
 import subprocess
@@ -56,8 +57,8 @@ def set_in_list(path, list_keyword, block, keyword, value):
 #: changes (./Alltest --seed-set N) is at most SUITE_ALPHA.
 SUITE_ALPHA = 0.01
 
-#: Test modules that may spend from it, at most (testing/README.md lists
-#: them); each gets MODULE_ALPHA, its own family-wise error, which it
+#: Test modules that may spend from it, at most (testing/README.md); each
+#: gets MODULE_ALPHA, its own family-wise error, which it
 #: shares among its comparisons (Bonferroni) and states in its docstring.
 MODULES = 40
 MODULE_ALPHA = SUITE_ALPHA/MODULES
@@ -99,8 +100,3 @@ def poisson_limits(mean, m=1, alpha=MODULE_ALPHA):
     mean, one of m comparisons sharing alpha (Bonferroni)."""
     a = alpha/m
     return (_stats.poisson.ppf(a/2, mean), _stats.poisson.isf(a/2, mean))
-
-
-def binomial_sigma(n, p):
-    """Standard deviation of a binomial count of n trials at probability p."""
-    return math.sqrt(n*p*(1 - p))
