@@ -21,6 +21,12 @@ Schaaf & Chambre 1958, Bird 1994 ch. 7).  Composite Simpson rule in the
 polar angle; the closed form is printed next to it as a cross-check.
 
 Loth (2008) drag and lift: doc/physics.md 4.5 typed here again, term by term.
+A typing error shared by the doc, this script and the C++ would pass these
+tables; Test-dragLaws therefore also checks the C++ against laws published
+apart from Loth's, which his correlation reduces to in its limits: Stokes,
+Schiller-Naumann over the Cunningham factor as Davies (1945) fitted it,
+Clift-Gauvin at Ma = 0, the free-molecular sphere at Re -> 0, Saffman's
+shear lift.  Tabulated values of Loth's own were not at hand.
 """
 
 import math

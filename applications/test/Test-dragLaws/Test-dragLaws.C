@@ -8,8 +8,10 @@ Application
 
 Description
     Unit test of the drag, lift and heat-transfer laws (Foam::dragLaws,
-    librarefiedCoupling; doc/physics.md 4.2, 4.5): limits (Stokes, free-molecular,
-    Newton, Clift-Gauvin at Ma = 0, Nusselt continuum and free-molecular),
+    librarefiedCoupling; doc/physics.md 4.2, 4.5): limits against laws
+    published apart from Loth's (Stokes, free-molecular, Newton,
+    Clift-Gauvin at Ma = 0, Cunningham-Davies slip, Saffman's shear lift,
+    Nusselt continuum and free-molecular),
     the jumps at the branch points Re = 45, Ma = 0.89, Ma = 1.45, and values
     against dragLawsReference.H, made apart from the C++ by
     validation/dragLaws/reference.py.  Each check prints its figure and
@@ -239,6 +241,40 @@ int main(int argc, char *argv[])
             lothCd(Re, 0, 1.4, 1), cliftGauvin, 1e-3
         );
     }
+
+    // Slip flow, Ma -> 0: Loth's Kn-correction against the Cunningham
+    // factor as Davies (1945) fitted it to Millikan's oil drops, in his own
+    // variables: C_c = 1 + K (1.257 + 0.400 exp(-1.10/K)), K = 2 lambda/d,
+    // with lambda = (mu/p) sqrt(pi k T/(2 m)) the gas's mean free path;
+    // for a gas of Re and Ma, lambda/d = sqrt(pi gamma/2) Ma/Re.  Expected
+    // C_D = 24/Re (1 + 0.15 Re^0.687)/C_c (Schiller-Naumann over C_c);
+    // Ma = 1e-3 leaves a Ma^4 weight of 1e-12
+    for (const scalar Kn : {0.01, 0.1, 1.0, 10.0})
+    {
+        const scalar gamma = 1.4, Ma = 1e-3;
+        const scalar Re = std::sqrt(pi*gamma/2)*Ma/Kn;
+        const scalar K = 2*Kn;
+        const scalar Cc = 1 + K*(1.257 + 0.400*std::exp(-1.10/K));
+        checkRel
+        (
+            fmt("slip: C_D(lambda/d = %g, Ma = 1e-3) vs Schiller-Naumann/"
+                "Cunningham-Davies", Kn),
+            lothCd(Re, Ma, gamma, 1),
+            24/Re*(1 + 0.15*std::pow(Re, 0.687))/Cc,
+            1e-6
+        );
+    }
+
+    // Shear lift, Saffman's limit (Saffman 1965: F = 6.46 mu a^2 U
+    // sqrt(G/nu) for Re << sqrt(Re_G) << 1): over 1/2 rho U^2 pi a^2,
+    // C_L = (12.92/pi) sqrt(omegaStar/Re).  At Re = 1e-6, omegaStar = 1e-2
+    // (sqrt(omegaStar/Re) = 100) Mei's J* is 1 - 2e-5 and the spin term
+    // omegaStar/2 is 1.2e-5 of the shear term: tolerance 1e-4
+    checkRel
+    (
+        "Saffman: C_L(Re = 1e-6, omegaStar = 1e-2) vs (12.92/pi) sqrt(omegaStar/Re)",
+        lothCl(1e-6, 1e-2), 12.92/pi*std::sqrt(1e-2/1e-6), 1e-4
+    );
 
     // ---------------------------------------------------------------------
     Info<< nl << "Loth C_D jumps at the branch points (left | right)" << nl;
