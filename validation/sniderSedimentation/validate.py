@@ -126,14 +126,19 @@ def solve(case, np_=1):
 NARROW_CELLS = 5                    # of the tutorial's 15 per side
 
 
-def narrow(build=BUILD, name="narrow", entries=None):
+def narrow(build=BUILD, name="narrow", entries=None, k=None):
     """The tutorial at its parcel weight in a narrow column (module
     docstring), with the grainsProperties entries {entry: value} changed;
     returns (all passed, summary) of rmf.snider.check with the averaged
     cell bound (a layer holds too few parcels for the layer bound:
-    rmf.snider) and the case."""
+    rmf.snider) and the case.  k: a member of an ensemble, the cloud's
+    seed(k) and the fill's seed(k + 100) (seeded() otherwise)."""
     case, _ = snider.narrow_column(os.path.join(build, name), NARROW_CELLS)
-    seeded(case)
+    if k is None:
+        seeded(case)
+    else:
+        foam.set_entry(case, INIT, "randomSeed", seed(k + 100))
+        foam.set_entry(case, PROPS, "randomSeed", seed(k))
     for entry, value in (entries or {}).items():
         foam.set_entry(case, PROPS, entry, value)
     foam.run(case, "blockMesh")
