@@ -764,7 +764,7 @@ def test_settled_bed(contacts):
     the random-packing range (0.55 random loose packing at high friction
     to 0.64) because one bed of 588 grains is that noisy; narrower needs a
     larger bed.  Measured 0.600 with cartesianContacts (2026-12-06) and
-    0.622 with pairCollision (2026-12-06; 0.626 in doc/physics.md 5.4).
+    0.622 with pairCollision (2026-12-06, doc/physics.md 5.4).
     Stiffness k_n = k_t = 20 N/m (not 8000):
     the packing is set by friction and restitution while the overlaps
     under the bed's weight stay small (12 layers x m g/k = 1.4e-3 d here),
