@@ -18,24 +18,34 @@ cost 1 and errors 0 by construction, is not checked: it could not fail):
 - NTC alone holds no bed: its erosion number at 0.05 s is below 10 % of
   the DEM's (the bed sinks into itself; the DEM's is 166, NTC's 0).
 
-The dustCloudStream --quick study (0.1 ms, one seed; about 2 minutes) and
-its analytic reference:
+The dustCloudStream --quick study (0.1 ms, one seed; about 20 s idle,
+--long only: its physics is checked in the default suite by
+tutorials/coupling/dustCloudStream's test) and its analytic reference:
 - the molecular speed moments relative to the grain, E|w| and E|w|^3 of
   a drifting Maxwellian, against quadrature of the speed's distribution
   (to 1e-8);
 - none: the grains neither move nor heat (errors exactly -100 %);
 - the free-molecular types (oneWay, twoWayDirect, twoWayIndirect,
-  adaptive) at the nominal weight and step: mean U_x and heating within
-  3 % of the analytic integrals (the tutorial's tolerance for U_x: the
-  grains feel the realized gas of their cells, whose density and
-  temperature fluctuate by a few %);
+  adaptive) at the nominal weight and step: mean U_x and heating against
+  the analytic integrals in the nominal stream, within t_limit(19, 8) =
+  5.4 times their sd over 20 seeds (FM_SD: the grains feel the realized
+  gas of their cells; until 2026-12-06 a flat 3 %, which 3 of those 20
+  seeds exceeded in U_x, up to +4.2 %, and the heating up to +5.3 %);
 - Loth's Nusselt heat, which leaves out the stream's kinetic energy,
   heats the grains more slowly than the free-molecular sum: its heating
   error is below -20 % (the tutorial's README: 351 K against 383 K at
-  1.5 ms, -39 %), so the study tells the two apart.
+  1.5 ms, -39 %), so the study tells the two apart (an effect of about
+  5 sd of the free-molecular heating's 20-seed scatter, 3.7 % for Loth).
+
+Family-wise error: 2.5e-4 (rmf_testing.MODULE_ALPHA) over the 8
+comparisons above (4 types x U_x and heating; the 4 types gave the same
+figures to the last digit for each seed), Student's t with 19 degrees of
+freedom; the other checks are exact or effects far beyond their noise.
 
 The Snider --quick study (the narrow column to 0.2 s, one seed; about
-1.5 minutes) and its reference, the ideal settling:
+50 s idle, --long only: validation/sniderSedimentation checks the
+tutorial's physics in the default suite) and its reference, the ideal
+settling:
 - free_fall_bed against hand-worked figures: Snider's column (alpha_0
   0.3, 0.3 m) has its bed at g t^2/2 and its top at 0.3 - g t^2/2 until
   they meet at t = sqrt(0.3/g) = 0.175 s, h = 0.15 m; every slab mean
@@ -60,7 +70,7 @@ import numpy as np
 import pytest
 from scipy import integrate
 
-from rmf_testing import report
+from rmf_testing import report, t_limit
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
@@ -121,6 +131,14 @@ def test_speed_moments():
     assert report("speed moments against quadrature", worst < 1e-8, f"largest {worst:.1e}")
 
 
+# sd of the free-molecular departures from the analytic integrals at
+# 0.1 ms in the nominal stream, U_x and heating, over seeds
+# rmf_testing.seed(100..119) (tutorial settings, 2026-12-06)
+FM_SD = {"U": 0.0167, "heating": 0.0232}
+FM_TOL = {e: t_limit(19, 8)*sd for e, sd in FM_SD.items()}
+
+
+@pytest.mark.long
 def test_dust_cloud_stream_quick():
     subprocess.run([sys.executable, os.path.join(HERE, "tradeoff.py"), "dustCloudStream",
                     "--quick"], check=True, stdout=subprocess.DEVNULL)
@@ -134,10 +152,11 @@ def test_dust_cloud_stream_quick():
                      float(none["U"]) == -1 and float(none["heating"]) == -1,
                      f"U {none['U']}, heating {none['heating']}")
     fm = ("oneWay", "twoWayDirect", "twoWayIndirect", "adaptive")
-    worst = max(abs(float(rows[n][e])) for n in fm for e in ("U", "heating"))
-    ok_fm = report("free-molecular types within 3 % of the analytic integrals", worst < 0.03,
+    ok_fm = report("free-molecular types against the analytic integrals",
+                   all(abs(float(rows[n][e])) < tol for n in fm for e, tol in FM_TOL.items()),
                    ", ".join(f"{n} U {100*float(rows[n]['U']):+.2f} %, heating "
-                             f"{100*float(rows[n]['heating']):+.2f} %" for n in fm))
+                             f"{100*float(rows[n]['heating']):+.2f} %" for n in fm)
+                   + f" (tolerances {100*FM_TOL['U']:.1f} %, {100*FM_TOL['heating']:.1f} %)")
     loth = float(rows["Loth"]["heating"])
     ok_loth = report("Loth heats more slowly", loth < -0.2, f"heating {100*loth:+.1f} %")
     assert ok_all and ok_none and ok_fm and ok_loth
@@ -155,6 +174,7 @@ def test_free_fall_bed():
     assert report("ideal settling", worst < 1e-12, f"largest deviation {worst:.1e}")
 
 
+@pytest.mark.long
 def test_snider_quick():
     subprocess.run([sys.executable, os.path.join(HERE, "tradeoff.py"), "snider", "--quick"],
                    check=True, stdout=subprocess.DEVNULL)
