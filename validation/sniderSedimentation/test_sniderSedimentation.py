@@ -12,10 +12,10 @@ restitution check (--long; a one-sided difference of means over 8 seeds
 each, false-alarm probability 4.4e-5 from the pilot's difference and
 scatter: rmf.snider), the narrow column's layer with packedCells (a
 one-sided Student's t limit at 8.3e-5 from a 16-seed ensemble) and the
-packedCells contrast (--long; 8e-7).  The other checks are bounds of doc/physics.md with margins set against
-measured realisations (rmf.snider, and the constants below), not limits
-of a noise model; the seeds of every run go through rmf_testing.seed
-(validate.py)."""
+packedCells contrast (--long; 8e-7).  The other checks are bounds of
+doc/physics.md with margins set against measured realisations
+(rmf.snider, and the constants below), not limits of a noise model; the
+seeds of every run go through rmf_testing.seed (validate.py)."""
 
 import os
 import sys

@@ -27,13 +27,14 @@ Checks (physical, each able to fail):
   The stream is the one the grains met: its density and velocity are
   the realized gas's, averaged over time from the start (OpenFOAM's
   fieldAverage of rho.gas and U.gas, added to the test's controlDict) and
-  over the cloud's slab (cells weighted by their overlap with it); its
-  temperature is the nominal one (a cell's per-step temperature from 20
-  simulators is biased low by about 1/20).  With the nominal stream the
-  departure scattered by 2 % between seeds (10 seeds, 2026-12-06: from
-  -1.7 % to +3.3 %), mostly from the mean stream velocity over the ~1100
-  simulators around the cloud, 456 m/s/sqrt(1100 x 2.5 flushes) = 1.7 %
-  of 500 m/s, which the drag feels about 1.5-fold.
+  over the cloud (cells weighted by the grains they held at the start);
+  its temperature is the nominal one (a cell's per-step temperature from
+  20 simulators is biased low by about 1/20: 934-980 K against 1000 K).
+  With the nominal stream the departure at 0.1 ms scattered by 1.7 %
+  between seeds (20 seeds, 2026-12-06: -1.5 % to +4.2 %; Loth sd 2.3 %,
+  up to +5.3 %; the flat 3 % used until then was exceeded by 3 and 4 of
+  them), mostly from the mean stream velocity over the ~1100 simulators
+  around the cloud, 456 m/s/sqrt(1100 x 2.5 flushes) = 1.7 % of 500 m/s.
   Tolerance: t_limit(19, 10) = 5.5 times the departure's sd over 20 seeds
   outside the test's (SD below; the mean departures, +0.08 %, +0.05 %,
   -0.30 %, +0.30 %, lie within their standard errors of zero).  The four
