@@ -34,8 +34,9 @@ tutorials/coupling/dustCloudStream's test) and its analytic reference:
 - Loth's Nusselt heat, which leaves out the stream's kinetic energy,
   heats the grains more slowly than the free-molecular sum: its heating
   error is below -20 % (the tutorial's README: 351 K against 383 K at
-  1.5 ms, -39 %), so the study tells the two apart (an effect of about
-  5 sd of the free-molecular heating's 20-seed scatter, 3.7 % for Loth).
+  1.5 ms, -39 %), so the study tells the two apart (measured -44.7 % at
+  0.1 ms, 6.7 times Loth's heating sd over 20 seeds, 3.7 %, below the
+  bound).
 
 Family-wise error: 2.5e-4 (rmf_testing.MODULE_ALPHA) over the 8
 comparisons above (4 types x U_x and heating; the 4 types gave the same

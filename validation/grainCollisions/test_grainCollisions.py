@@ -121,8 +121,9 @@ Maxwellian of variance 2 theta: <c_r> = 4 sqrt(theta/pi),
    kinetic energy (3/2) n V m theta_0 for the energy.  C is kinetic theory's
    expected number of events, not the code's count: the 20000 real
    grains' collisions in the cooling gas, (N nu_0/2) tau ln(1 + t/tau),
-   times W_max N_p^2/N^2 = 1.125 (NTCHardSphere.H: candidates between any two of the
-   N_p = 15000 parcels are drawn at the largest weight's rate).
+   times W_max N_p^2/N^2 = 1.125 (NTCHardSphere.H: candidates between
+   any two of the N_p = 15000 parcels are drawn at the largest weight's
+   rate).
 
 7. Hybrid and validity monitor (one step): with alphaSwitch set inside
    the range of the cells' alpha, cells above it have no candidate and no
