@@ -1,7 +1,8 @@
 # rarefiedMultiphaseFoam. Copyright (C) 2026 The rarefiedMultiphaseFoam authors
 # SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
 """pytest configuration for ./Alltest: project helpers and test support on
-sys.path, --long, --seed-set (testing/README.md)."""
+sys.path, --long, --seed-set, and under ./Alltest's two workers
+(pytest-xdist) testing/bin first on PATH (testing/README.md, Time)."""
 
 import os
 import sys
@@ -23,6 +24,12 @@ def pytest_configure(config):
     if config.getoption("--seed-set") is not None:
         os.environ["RMF_SEED_SET"] = str(config.getoption("--seed-set"))
     config.addinivalue_line("markers", "long: long run, only with --long")
+    if os.environ.get("PYTEST_XDIST_WORKER"):
+        # ./Alltest's workers start the solvers and mpirun through
+        # testing/bin: an mpirun runs with no solver of the other worker
+        # beside it (testing/README.md, Time)
+        os.environ["PATH"] = os.path.join(HERE, "testing", "bin") + os.pathsep \
+            + os.environ["PATH"]
 
 
 def pytest_collection_modifyitems(config, items):
