@@ -8,6 +8,7 @@ case's own files, and a picture that is not blank.
     failures, found = pvcheck.check(case, field="alpha.grains", cloud="grains")
 """
 
+import fcntl
 import json
 import os
 import subprocess
@@ -23,15 +24,19 @@ def snapshot(case, field, cloud, output):
     """The JSON pvsnapshot prints (raises on a failed pvbatch).  No time
     limit: a slow machine is not a failure (a hung pvbatch is left to the
     suite's runner)."""
-    for attempt in range(3):
-        proc = subprocess.run(["xvfb-run", "-a", "-s", "-screen 0 1280x1024x24", "pvbatch",
-                               SCRIPT, case, "--field", field, "--cloud", cloud,
-                               "--output", output],
-                              capture_output=True, text=True)
-        # An X server that xvfb-run started badly (it picks a free display
-        # number without a lock against another starting at once): again
-        if "CreateAWindow" not in proc.stdout + proc.stderr:
-            break
+    # xvfb-run -a picks a free display number without a lock against another
+    # starting at once (./Alltest's two workers): one at a time per project
+    os.makedirs(os.path.join(foam.PROJECT_DIR, "build"), exist_ok=True)
+    with open(os.path.join(foam.PROJECT_DIR, "build", "pvbatch.lock"), "a") as lock:
+        fcntl.flock(lock, fcntl.LOCK_EX)
+        for attempt in range(3):
+            proc = subprocess.run(["xvfb-run", "-a", "-s", "-screen 0 1280x1024x24",
+                                   "pvbatch", SCRIPT, case, "--field", field,
+                                   "--cloud", cloud, "--output", output],
+                                  capture_output=True, text=True)
+            # An X server that xvfb-run started badly: again
+            if "CreateAWindow" not in proc.stdout + proc.stderr:
+                break
     lines = [line for line in proc.stdout.splitlines() if line.startswith("{")]
     if proc.returncode != 0 or not lines:
         raise RuntimeError(f"pvbatch failed ({proc.returncode}):\n"
