@@ -209,6 +209,9 @@ FAMILIES = {
     "gas": (gas, 10),
     "mppic": (snider, 5),
     "hybrid": (lambda d, n, seed=None: snider(d, n, seed, hybrid=True), 5),
+    # twoSided's predicted reference velocities: their state (the previous
+    # mean correction) is carried through the restart too
+    "mppicPredicted": (lambda d, n, seed=None: _set_predicted(snider(d, n, seed)), 5),
     "ntc": (ntc, 5),
     "dem": (dem, 10),
     "oneWay": (lambda d, n, seed=None: coupled(d, n, "oneWay", seed), 5),
@@ -220,6 +223,11 @@ FAMILIES = {
     "vibration": (vibrating, 5),
     "upstreamIsotropy": (lambda d, n: _upstream_isotropy(d, n), 5),
 }
+
+
+def _set_predicted(case):
+    _set(case, [(GRAINS, "subModels/twoSidedCoeffs/predictMean", "true")])
+    return case
 
 
 def _upstream_isotropy(dst, np_):

@@ -30,6 +30,10 @@ draws sniderVariants.png: alpha(z) at 0.1, 0.15, 0.2 and 0.6 s of each.
 Reduced (default, in ./Alltest): 4 times fewer parcels of 4 times the
 weight (same alpha0); --full: the tutorial as it is (162 232 parcels).
 
+free_fall(): the tutorial at its parcel weight to 0.15 s, serial: the
+suspension's fall before the bed reaches it (rmf.snider.free_fall); the
+tests run it with twoSided's predictMean.
+
 narrow(): the over-packing bounds at the tutorial's parcel weight in
 ./Alltest: a column of 5 x 5 of the tutorial's cells (0.046 m square)
 holding a ninth of its parcels (18 026 x 749), to 0.6 s, serial; the
@@ -121,6 +125,21 @@ def solve(case, np_=1):
         foam.run(case, "reconstructPar", *foam.RECONSTRUCT_ALL)
     else:
         foam.run(case, "rarefiedMultiphaseFoam")
+
+
+def free_fall(build=BUILD, scale=1, entries=None):
+    """The suspension's fall (module docstring) at scale times the
+    tutorial's parcel weight, with the grainsProperties entries {entry:
+    value} changed; returns rmf.snider.free_fall of the run."""
+    name = f"weight{scale:g}" + "".join(f"_{k.split('/')[-1]}{v}" for k, v in (entries or {}).items())
+    case = prepare(os.path.join(build, "freeFall"), name, scale,
+                   float(snider.FREE_FALL_TIMES[-1]), entries=entries)
+    solve(case)
+    fall = snider.free_fall(case)
+    for time, (error, se, n) in fall.items():
+        print(f"free fall at {time} s, weight x {scale:g}: {100*error:+.2f} % "
+              f"(standard error {100*se:.3f} %, {n} parcels)")
+    return fall
 
 
 NARROW_CELLS = 5                    # of the tutorial's 15 per side

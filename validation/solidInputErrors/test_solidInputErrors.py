@@ -106,6 +106,7 @@ CLOUD_CASES = [
     ("packingRelief", "subModels/twoSidedCoeffs/relief", "2", "[0, 1]"),
     ("packingSmoothing", "subModels/twoSidedCoeffs/smoothing", "-0.5", "[0, 1]"),
     ("packingPackedCells", "subModels/twoSidedCoeffs/packedCells", "maybe", "true or false"),
+    ("packingPredictMean", "subModels/twoSidedCoeffs/predictMean", "maybe", "true or false"),
     ("packingAlphaMin", "subModels/twoSidedCoeffs/alphaMin", "0", "(0, 1)"),
     ("tracking", "tracking", "straight", "cartesian"),
 ]

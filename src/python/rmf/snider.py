@@ -68,6 +68,17 @@ Tolerances and where they come from:
   12.99, 12.91 mm for e = 0.85 and 12.90, 12.86, 12.68, 12.96 mm for
   e = 0.5 (seeds 0 to 3).  A single pair compared at 0.2 s, the check
   until then, passed or failed with the realisation.
+- free fall (free_fall; doc/physics.md 5.3.1): before the bed reaches
+  it the suspension falls freely, every grain at g t.  The parcels' mean
+  vertical velocity in the band FREE_FALL_MARGIN (two layers, 15 mm)
+  above the ideal bed front and below the ideal top of the column
+  (free_fall_bed), at 0.05, 0.1 and 0.15 s, is -g t within
+  FREE_FALL_TOL = 0.5 % at the tutorial's parcel weight with twoSided's
+  predictMean (the bound we set the model: a uniform region feels no
+  net force from its own stress; the default is about 2 % slow).  The
+  parcels' own scatter puts the band mean's standard error at 0.001 to
+  0.003 % of g t (it is printed), and the measured error is 0.08 to
+  0.13 %: the bound checks the model's bias, far above its noise.
 - pictures (curves_drawn): the plots' curves are drawn in colour, their
   axes, text and the alphaPacked line in grey, so the share of coloured
   pixels (channels more than COLOURED apart) tells a plot with its
@@ -183,6 +194,34 @@ def free_fall_bed(t, edges, alpha0, height, alpha_packed=ALPHA_PACKED, g=GRAVITY
     packed = np.clip(np.minimum(hi, bed) - lo, 0, None)
     falling = np.clip(np.minimum(hi, top) - np.maximum(lo, bed), 0, None)
     return (alpha_packed*packed + alpha0*falling)/(hi - lo), bed
+
+
+# Band kept clear of the ideal bed front and top (two 7.5 mm layers)
+# and the free-fall bound at the tutorial's weight (docstring)
+FREE_FALL_MARGIN = 0.015
+FREE_FALL_TOL = 0.005
+FREE_FALL_TIMES = ("0.05", "0.1", "0.15")
+
+
+def free_fall(case, times=FREE_FALL_TIMES, alpha0=0.3, height=0.3, g=GRAVITY):
+    """{time: (error, standard error, parcels)} of the suspension's fall
+    (docstring): the parcels' mean U_z between FREE_FALL_MARGIN above the
+    ideal bed front and below the ideal top, relative to the free fall
+    -g t (error -0.01: 1 % slower), and the standard error of that mean
+    from the parcels' scatter, relative likewise."""
+    result = {}
+    for time in times:
+        t = float(time)
+        lag = os.path.join(case, time, "lagrangian", CLOUD)
+        z = foam.read_positions(os.path.join(lag, "positions"))[:, 2]
+        uz = foam.read_list(os.path.join(lag, "U"))[:, 2]
+        _, bed = free_fall_bed(t, np.array([0.0, height]), alpha0, height, g=g)
+        top = height - 0.5*g*t*t
+        band = uz[(z > bed + FREE_FALL_MARGIN) & (z < top - FREE_FALL_MARGIN)]
+        fall = -g*t
+        result[time] = (float(band.mean()/fall - 1),
+                        float(band.std()/np.sqrt(band.size)/abs(fall)), int(band.size))
+    return result
 
 
 def layers(case):

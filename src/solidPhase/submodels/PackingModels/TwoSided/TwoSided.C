@@ -30,7 +30,7 @@ void Foam::PackingModels::TwoSided<CloudType>::checkCoeffs
         coeffs,
         {
             "particleStressModel", "e", "alphaMin", "relief", "smoothing",
-            "packedCells"
+            "packedCells", "predictMean"
         }
     );
     inputChecks::getClosed(coeffs, "e", 0, 1);
@@ -42,6 +42,7 @@ void Foam::PackingModels::TwoSided<CloudType>::checkCoeffs
     inputChecks::getClosedOrDefault(coeffs, "relief", 0, 0, 1);
     inputChecks::getClosedOrDefault(coeffs, "smoothing", 0, 0, 1);
     inputChecks::getBoolOrDefault(coeffs, "packedCells", false);
+    inputChecks::getBoolOrDefault(coeffs, "predictMean", false);
 }
 
 
@@ -171,6 +172,59 @@ void Foam::PackingModels::TwoSided<CloudType>::smoothStressGradient()
 
 
 template<class CloudType>
+void Foam::PackingModels::TwoSided<CloudType>::predictMean()
+{
+    const fvMesh& mesh = this->owner().mesh();
+    const AveragingMethod<vector>& after = *uAverage_;
+    const AveragingMethod<vector>& uStart = uStart_();
+    const AveragingMethod<vector>& c = correction_();
+
+    // u_m = u_s + (1 - h) f per node and component
+    AveragingMethod<vector>& u = uMean_();
+    forAll(u, i)
+    {
+        forAll(u[i], j)
+        {
+            for (direction d = 0; d < vector::nComponents; ++d)
+            {
+                const scalar f = after[i][j][d] - uStart[i][j][d];
+                const scalar h = predict_ ? held(c[i][j][d], f) : 1;
+                u[i][j][d] =
+                    started_ ? uStart[i][j][d] + (1 - h)*f : after[i][j][d];
+            }
+        }
+    }
+    uCell_ = u.primitiveField();
+    uNbr_.setSize(mesh.nBoundaryFaces());
+    syncTools::swapBoundaryCellList(mesh, uCell_, uNbr_);
+
+    // h of the cells (the sides of velocityCorrection)
+    heldCell_.setSize(mesh.nCells());
+    heldCell_ = vector::one;
+    if (started_ && predict_)
+    {
+        const vectorField afterCell(after.primitiveField());
+        const vectorField startCell(uStart.primitiveField());
+        const vectorField cCell(c.primitiveField());
+        forAll(heldCell_, celli)
+        {
+            for (direction d = 0; d < vector::nComponents; ++d)
+            {
+                heldCell_[celli][d] =
+                    held
+                    (
+                        cCell[celli][d],
+                        afterCell[celli][d] - startCell[celli][d]
+                    );
+            }
+        }
+    }
+    heldNbr_.setSize(mesh.nBoundaryFaces());
+    syncTools::swapBoundaryCellList(mesh, heldCell_, heldNbr_);
+}
+
+
+template<class CloudType>
 Foam::vector Foam::PackingModels::TwoSided<CloudType>::stressGradient
 (
     const barycentric& coordinates,
@@ -221,12 +275,18 @@ Foam::PackingModels::TwoSided<CloudType>::TwoSided
     (
         inputChecks::getBoolOrDefault(this->coeffDict(), "packedCells", false)
     ),
+    predict_
+    (
+        inputChecks::getBoolOrDefault(this->coeffDict(), "predictMean", false)
+    ),
     cellLength_(cbrt(owner.mesh().V().field())),
     volumeAverage_(nullptr),
     massAverage_(nullptr),
     uAverage_(nullptr),
     stressAverage_(nullptr),
     uStart_(nullptr),
+    correction_(nullptr),
+    uMean_(nullptr),
     uEnd_(nullptr),
     uCell_(),
     uNbr_(),
@@ -250,12 +310,15 @@ Foam::PackingModels::TwoSided<CloudType>::TwoSided
     relief_(cm.relief_),
     smoothing_(cm.smoothing_),
     packedCells_(cm.packedCells_),
+    predict_(cm.predict_),
     cellLength_(cm.cellLength_),
     volumeAverage_(nullptr),
     massAverage_(nullptr),
     uAverage_(nullptr),
     stressAverage_(nullptr),
     uStart_(nullptr),
+    correction_(nullptr),
+    uMean_(nullptr),
     uEnd_(nullptr),
     tauGradCell_(),
     tauGradPoint_(),
@@ -302,32 +365,41 @@ void Foam::PackingModels::TwoSided<CloudType>::cacheFields(const bool store)
             uStart_ =
                 cloudAverages::make<vector>(cloud, "twoSidedStartVelocity");
             uEnd_ = cloudAverages::make<vector>(cloud, "twoSidedEndVelocity");
+            correction_ =
+                cloudAverages::make<vector>(cloud, "twoSidedCorrection");
+            uMean_ = cloudAverages::make<vector>(cloud, "twoSidedMeanVelocity");
 
-            // u_m of a restart: every part of the average (dual: the
-            // cells' and the points')
-            AveragingMethod<vector>& u = uStart_();
+            // u_s and c of a restart: every part of the averages (dual:
+            // the cells' and the points')
             started_ = restart_.size();
-            forAll(u, i)
-            {
-                List<vector> values;
-                const word key("uMean" + Foam::name(i));
-                if (restartState::get(restart_, key, u[i].size(), values))
-                {
-                    u[i] = values;
+            for
+            (
+                const auto& item
+              : {
+                    std::make_pair(word("uMean"), &uStart_()),
+                    std::make_pair(word("correction"), &correction_())
                 }
-                else
+            )
+            {
+                AveragingMethod<vector>& u = *item.second;
+                forAll(u, i)
                 {
-                    started_ = false;
+                    List<vector> values;
+                    const word key(item.first + Foam::name(i));
+                    if (restartState::get(restart_, key, u[i].size(), values))
+                    {
+                        u[i] = values;
+                    }
+                    else
+                    {
+                        started_ = false;
+                    }
                 }
             }
             restart_.clear();
         }
         uEnd_() = Zero;
-
-        uCell_ =
-            started_ ? uStart_->primitiveField() : uAverage_->primitiveField();
-        uNbr_.setSize(mesh.nBoundaryFaces());
-        syncTools::swapBoundaryCellList(mesh, uCell_, uNbr_);
+        predictMean();
         if (packedCells_)
         {
             alphaCell_ = volumeAverage_->primitiveField();
@@ -346,8 +418,14 @@ void Foam::PackingModels::TwoSided<CloudType>::cacheFields(const bool store)
     }
     else
     {
-        // The corrected velocities' mean: u_m of the next step
+        // The corrected velocities' mean and the mean correction: u_s
+        // and c of the next step
         uEnd_->average(*massAverage_);
+        AveragingMethod<vector>& c = correction_();
+        forAll(c, i)
+        {
+            c[i] = uEnd_()[i] - (*uAverage_)[i];
+        }
         uStart_() = uEnd_();
         started_ = true;
 
@@ -358,6 +436,7 @@ void Foam::PackingModels::TwoSided<CloudType>::cacheFields(const bool store)
             forAll(u, i)
             {
                 restartState::put(state, "uMean" + Foam::name(i), u[i]);
+                restartState::put(state, "correction" + Foam::name(i), c[i]);
             }
             restartState::write(mesh, cloudName, typeName, state);
         }
@@ -382,10 +461,7 @@ Foam::vector Foam::PackingModels::TwoSided<CloudType>::velocityCorrection
     const scalar alpha =
         max(volumeAverage_->interpolate(p.coordinates(), tetIs), alphaMin_);
     const vector tauGrad = stressGradient(p.coordinates(), tetIs);
-    const vector uMean =
-        started_
-      ? uStart_->interpolate(p.coordinates(), tetIs)
-      : uAverage_->interpolate(p.coordinates(), tetIs);
+    const vector uMean = uMean_->interpolate(p.coordinates(), tetIs);
 
     // Stress correction (Snider's eq. 38 without drag; above alphaPacked
     // the stress counts as infinitely stiff: the limits alone apply) and
@@ -411,31 +487,33 @@ Foam::vector Foam::PackingModels::TwoSided<CloudType>::velocityCorrection
     for (direction i = 0; i < vector::nComponents; ++i)
     {
         // Pushed away from the stressed side, at most to the velocity of
-        // the neighbour there (clamped at rest: it may stop the parcel,
-        // never drive it) plus the relief, or by the reflected slip
+        // the neighbour there (clamped at its rest: it may stop the
+        // parcel, never drive it) plus the relief, or by the reflected
+        // slip
         const bool up = tauGrad[i] <= 0;
         const label n = (up ? below_ : above_)[i][p.cell()];
         const scalar uSide = onSide(n, uCell_, vector::zero, uNbr_)[i];
 
         // packedCells: a packed cell on the stressed side stops the
-        // parcel as if it were packed itself
-        const bool stiffSide =
-            stiff
-         || (
-                packedCells_
-             && onSide(n, alphaCell_, scalar(0), alphaNbr_) >= alphaPacked
-            );
+        // parcel as if it were packed itself, and at rest
+        const bool packedSide =
+            packedCells_
+         && onSide(n, alphaCell_, scalar(0), alphaNbr_) >= alphaPacked;
+        const bool stiffSide = stiff || packedSide;
+        const scalar rest =
+            packedSide ? 0
+          : (1 - onSide(n, heldCell_, vector::one, heldNbr_)[i])*uMean[i];
 
         if (up)
         {
-            const scalar stopped = min(uSide, scalar(0)) + uRelief - p.U()[i];
+            const scalar stopped = min(uSide, rest) + uRelief - p.U()[i];
             const scalar limit = max(reflected[i], stopped);
             uCorr[i] =
                 max(scalar(0), stiffSide ? limit : min(dU[i], limit));
         }
         else
         {
-            const scalar stopped = max(uSide, scalar(0)) - uRelief - p.U()[i];
+            const scalar stopped = max(uSide, rest) - uRelief - p.U()[i];
             const scalar limit = min(reflected[i], stopped);
             uCorr[i] =
                 min(scalar(0), stiffSide ? limit : max(dU[i], limit));
