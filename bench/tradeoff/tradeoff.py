@@ -56,13 +56,17 @@ snider (tutorials/solids/sniderSedimentation, doc/physics.md 7.1)
     cells, its fill and parcel weight).  Reference: analytic, the ideal
     settling (rmf.snider.free_fall_bed: free fall onto a bed that packs
     at alpha_cp on arrival).  Settings, one change at a time from the
-    tutorial's: explicit and implicit packing, basic and dual averaging,
-    parcel weight x 4 and x 16, deltaT x 1/2 and x 2, cells x 1/2 and x 2
-    in each direction.  The seed is the initial positions'.  Errors:
+    tutorial's: twoSided's predictMean, explicit and implicit packing,
+    basic and dual averaging, parcel weight x 4 and x 16, deltaT x 1/2
+    and x 2, cells x 1/2 and x 2 in each direction.  The seed is the initial positions'.  Errors:
     alpha(z) of the parcels on the tutorial's 40 slabs (the same for
     every mesh), RMS of the difference from the ideal's over alpha_cp,
     at each of 0.1, 0.15, 0.2 and 0.6 s (t0.1 ...) and over all
-    (profile).  Cost: least CPU time over the seeds over the tutorial
+    (profile); the kinematics: fall, RMS over 0.05, 0.1 and 0.15 s of
+    the suspension's mean U_z against -g t (rmf.snider.free_fall),
+    relative; front, RMS over 0.1 and 0.15 s of the bed surface's height
+    (where alpha(z) falls through (alpha0 + alpha_cp)/2) against the ideal
+    front, relative.  Cost: least CPU time over the seeds over the tutorial
     setting's least.  Full size: 0.6 s, 3 seeds (10 minutes); --quick:
     0.2 s, 1 seed (1.5 minutes).
 
@@ -465,6 +469,7 @@ SNIDER_SETTINGS = [
     # name, label, {packing, averaging, weight, dt, mesh}: factors of the
     # tutorial's parcel weight, step and cells per direction
     ("base", "twoSided, cachedDual, W, 1 ms, 4 x 4 x 40 cells (the tutorial's)", {}),
+    ("predicted", "twoSided with predictMean", {"predictMean": True}),
     ("explicit", "v1912's explicit packing", {"packing": "explicit"}),
     ("implicit", "v1912's implicit packing (eps 1e-2)", {"packing": "implicit"}),
     ("basic", "basic averaging", {"averaging": "basic"}),
@@ -488,6 +493,8 @@ def snider_case(dst, change, seed, end):
     foam.set_entry(case, control, "endTime", end)
     if "packing" in change:
         foam.set_entry(case, props, "subModels/packingModel", change["packing"])
+    if "predictMean" in change:
+        foam.set_entry(case, props, "subModels/twoSidedCoeffs/predictMean", "true")
     if "averaging" in change:
         foam.set_entry(case, props, "solution/averagingMethod", change["averaging"])
     if "weight" in change:
@@ -528,6 +535,20 @@ def snider_scene(quick, seeds):
                 squares.append(np.mean((a - ideal)**2))
                 row["t" + t] = float(np.sqrt(squares[-1]))/snider.ALPHA_PACKED
             row["profile"] = float(np.sqrt(np.mean(squares)))/snider.ALPHA_PACKED
+            # The kinematics: the suspension's fall and the bed front
+            fall = snider.free_fall(case, alpha0=alpha0, height=height)
+            row["fall"] = float(np.sqrt(np.mean([e*e for e, _, _ in fall.values()])))
+            centres = 0.5*(edges[:-1] + edges[1:])
+            fronts = []
+            for t in ("0.1", "0.15"):
+                _, ideal_front = snider.free_fall_bed(float(t), edges, alpha0, height)
+                # (through the mean of alpha0 and alpha_cp: alpha_cp/2 is
+                # the suspension's own alpha)
+                surface = snider.falls_through(
+                    centres, snider.parcel_profile(case, t, edges, area),
+                    0.5*(alpha0 + snider.ALPHA_PACKED))
+                fronts.append((surface - ideal_front)/ideal_front)
+            row["front"] = float(np.sqrt(np.mean(np.square(fronts))))
             # The noise floor of the measure in a packed slab: the Poisson
             # scatter of its parcel count (independent of the model)
             v_parcel = float(np.mean(snider.parcel_volumes(case, "0")))
@@ -536,19 +557,24 @@ def snider_scene(quick, seeds):
             rows.append(row)
             print(f"seed {seed} {name}: alpha(z) error {100*row['profile']:.1f} % ("
                   + ", ".join(f"{t} s {100*row['t' + t]:.1f} %" for t in times)
-                  + f"), CPU {row['cpu']:.1f} s", flush=True)
+                  + f"), fall {100*row['fall']:.1f} %, front {100*row['front']:.1f} %"
+                  + f", CPU {row['cpu']:.1f} s", flush=True)
         base = next(r for r in rows if r["seed"] == seed and r["setting"] == "base")
         for r in rows:
             if r["seed"] == seed:
                 r["cost"] = r["cpu"]/base["cpu"]
 
-    errors = ["profile"] + ["t" + t for t in times]
+    errors = ["profile"] + ["t" + t for t in times] + ["fall", "front"]
     note = (f"Snider sedimentation, the narrow column ({SNIDER_CELLS} x {SNIDER_CELLS} of "
             f"the tutorial's cells, its fill and parcel weight), {end:g} s, {seeds} seed(s) of "
             "the initial positions. Reference: the ideal settling (free fall onto a bed "
             "that packs at alpha_cp on arrival; rmf.snider.free_fall_bed).  Errors: RMS over "
             f"the {SNIDER_SLABS} slabs of 7.5 mm of the parcels' alpha(z) minus the "
-            "ideal's, over alpha_cp, at each time (t0.1 ...) and over all (profile).  "
+            "ideal's, over alpha_cp, at each time (t0.1 ...) and over all (profile); "
+            "fall: RMS over 0.05, 0.1 and 0.15 s of the suspension's mean U_z (two "
+            "layers clear of the ideal front and top) against -g t, relative; front: "
+            "RMS over 0.1 and 0.15 s of the bed surface (alpha through (alpha0 + "
+            "alpha_cp)/2) against the ideal front, relative.  "
             "Noise floor: a packed slab's Poisson scatter 1/sqrt(N) is "
             f"{100*floors['base']:.1f} % at the tutorial's weight, "
             f"{100*floors['weight16']:.1f} % at W x 16.  "
