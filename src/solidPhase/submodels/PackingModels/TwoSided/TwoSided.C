@@ -175,22 +175,32 @@ template<class CloudType>
 void Foam::PackingModels::TwoSided<CloudType>::predictMean()
 {
     const fvMesh& mesh = this->owner().mesh();
-    const AveragingMethod<vector>& after = *uAverage_;
-    const AveragingMethod<vector>& uStart = uStart_();
-    const AveragingMethod<vector>& c = correction_();
-
-    // u_m = u_s + (1 - h) f per node and component
     AveragingMethod<vector>& u = uMean_();
-    forAll(u, i)
+    if (!started_)
     {
-        forAll(u[i], j)
+        u = *uAverage_;
+    }
+    else if (!predict_)
+    {
+        u = uStart_();
+    }
+    else
+    {
+        // u_m = u_s + (1 - h) f and h, per node and component
+        const AveragingMethod<vector>& after = *uAverage_;
+        const AveragingMethod<vector>& uStart = uStart_();
+        const AveragingMethod<vector>& c = correction_();
+        AveragingMethod<vector>& h = held_();
+        forAll(u, i)
         {
-            for (direction d = 0; d < vector::nComponents; ++d)
+            forAll(u[i], j)
             {
-                const scalar f = after[i][j][d] - uStart[i][j][d];
-                const scalar h = predict_ ? held(c[i][j][d], f) : 1;
-                u[i][j][d] =
-                    started_ ? uStart[i][j][d] + (1 - h)*f : after[i][j][d];
+                for (direction d = 0; d < vector::nComponents; ++d)
+                {
+                    const scalar f = after[i][j][d] - uStart[i][j][d];
+                    h[i][j][d] = held(c[i][j][d], f);
+                    u[i][j][d] = uStart[i][j][d] + (1 - h[i][j][d])*f;
+                }
             }
         }
     }
@@ -199,28 +209,15 @@ void Foam::PackingModels::TwoSided<CloudType>::predictMean()
     syncTools::swapBoundaryCellList(mesh, uCell_, uNbr_);
 
     // h of the cells (the sides of velocityCorrection)
-    heldCell_.setSize(mesh.nCells());
-    heldCell_ = vector::one;
-    if (started_ && predict_)
+    if (predict_)
     {
-        const vectorField afterCell(after.primitiveField());
-        const vectorField startCell(uStart.primitiveField());
-        const vectorField cCell(c.primitiveField());
-        forAll(heldCell_, celli)
-        {
-            for (direction d = 0; d < vector::nComponents; ++d)
-            {
-                heldCell_[celli][d] =
-                    held
-                    (
-                        cCell[celli][d],
-                        afterCell[celli][d] - startCell[celli][d]
-                    );
-            }
-        }
+        heldCell_ =
+            started_
+          ? held_->primitiveField()
+          : tmp<vectorField>::New(mesh.nCells(), vector::one);
+        heldNbr_.setSize(mesh.nBoundaryFaces());
+        syncTools::swapBoundaryCellList(mesh, heldCell_, heldNbr_);
     }
-    heldNbr_.setSize(mesh.nBoundaryFaces());
-    syncTools::swapBoundaryCellList(mesh, heldCell_, heldNbr_);
 }
 
 
@@ -286,6 +283,7 @@ Foam::PackingModels::TwoSided<CloudType>::TwoSided
     stressAverage_(nullptr),
     uStart_(nullptr),
     correction_(nullptr),
+    held_(nullptr),
     uMean_(nullptr),
     uEnd_(nullptr),
     uCell_(),
@@ -318,6 +316,7 @@ Foam::PackingModels::TwoSided<CloudType>::TwoSided
     stressAverage_(nullptr),
     uStart_(nullptr),
     correction_(nullptr),
+    held_(nullptr),
     uMean_(nullptr),
     uEnd_(nullptr),
     tauGradCell_(),
@@ -365,27 +364,23 @@ void Foam::PackingModels::TwoSided<CloudType>::cacheFields(const bool store)
             uStart_ =
                 cloudAverages::make<vector>(cloud, "twoSidedStartVelocity");
             uEnd_ = cloudAverages::make<vector>(cloud, "twoSidedEndVelocity");
-            correction_ =
-                cloudAverages::make<vector>(cloud, "twoSidedCorrection");
             uMean_ = cloudAverages::make<vector>(cloud, "twoSidedMeanVelocity");
+            if (predict_)
+            {
+                correction_ =
+                    cloudAverages::make<vector>(cloud, "twoSidedCorrection");
+                held_ = cloudAverages::make<vector>(cloud, "twoSidedHeld");
+            }
 
-            // u_s and c of a restart: every part of the averages (dual:
+            // u_s (and c) of a restart: every part of the averages (dual:
             // the cells' and the points')
             started_ = restart_.size();
-            for
-            (
-                const auto& item
-              : {
-                    std::make_pair(word("uMean"), &uStart_()),
-                    std::make_pair(word("correction"), &correction_())
-                }
-            )
+            auto read = [&](const word& name, AveragingMethod<vector>& u)
             {
-                AveragingMethod<vector>& u = *item.second;
                 forAll(u, i)
                 {
                     List<vector> values;
-                    const word key(item.first + Foam::name(i));
+                    const word key(name + Foam::name(i));
                     if (restartState::get(restart_, key, u[i].size(), values))
                     {
                         u[i] = values;
@@ -395,6 +390,11 @@ void Foam::PackingModels::TwoSided<CloudType>::cacheFields(const bool store)
                         started_ = false;
                     }
                 }
+            };
+            read("uMean", uStart_());
+            if (predict_)
+            {
+                read("correction", correction_());
             }
             restart_.clear();
         }
@@ -418,13 +418,16 @@ void Foam::PackingModels::TwoSided<CloudType>::cacheFields(const bool store)
     }
     else
     {
-        // The corrected velocities' mean and the mean correction: u_s
-        // and c of the next step
+        // The corrected velocities' mean (and the mean correction): u_s
+        // (and c) of the next step
         uEnd_->average(*massAverage_);
-        AveragingMethod<vector>& c = correction_();
-        forAll(c, i)
+        if (predict_)
         {
-            c[i] = uEnd_()[i] - (*uAverage_)[i];
+            AveragingMethod<vector>& c = correction_();
+            forAll(c, i)
+            {
+                c[i] = uEnd_()[i] - (*uAverage_)[i];
+            }
         }
         uStart_() = uEnd_();
         started_ = true;
@@ -436,7 +439,13 @@ void Foam::PackingModels::TwoSided<CloudType>::cacheFields(const bool store)
             forAll(u, i)
             {
                 restartState::put(state, "uMean" + Foam::name(i), u[i]);
-                restartState::put(state, "correction" + Foam::name(i), c[i]);
+                if (predict_)
+                {
+                    restartState::put
+                    (
+                        state, "correction" + Foam::name(i), correction_()[i]
+                    );
+                }
             }
             restartState::write(mesh, cloudName, typeName, state);
         }
@@ -501,8 +510,9 @@ Foam::vector Foam::PackingModels::TwoSided<CloudType>::velocityCorrection
          && onSide(n, alphaCell_, scalar(0), alphaNbr_) >= alphaPacked;
         const bool stiffSide = stiff || packedSide;
         const scalar rest =
-            packedSide ? 0
-          : (1 - onSide(n, heldCell_, vector::one, heldNbr_)[i])*uMean[i];
+            predict_ && !packedSide
+          ? (1 - onSide(n, heldCell_, vector::one, heldNbr_)[i])*uMean[i]
+          : 0;
 
         if (up)
         {
