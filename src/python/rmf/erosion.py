@@ -5,12 +5,16 @@ they settle, the erosion series of a run, its figures and plots.
 
     /usr/bin/python3 -m rmf.erosion bed CASE [--seed N]
     /usr/bin/python3 -m rmf.erosion settled TIMEDIR CASE
+    /usr/bin/python3 -m rmf.erosion profile CASE [--u0 U0] [--length L]
     /usr/bin/python3 -m rmf.erosion plot CASE [--png FILE]
     /usr/bin/python3 -m rmf.erosion compare RUN... [--png FILE] [--table FILE]
 
 `bed` writes CASE/constant/bedPositions (800 grains of 1 mm on a loose
 jittered lattice, at rest); `settled` writes it from the grains of a
-run's time directory (the DEM's settled bed, for the parcel variants).
+run's time directory (the DEM's settled bed, for the parcel variants);
+`profile` writes CASE/constant/plumeProfile, U_x(y) = U0 tanh(y/L) at
+Berger's gas density and temperature (the tutorial's: U0 = 200 m/s,
+L = 0.03 m, the calibration in its README).
 `plot` reads the erosionPlanes series of a run
 (postProcessing/lagrangian/grains/erosionPlanes/<start>/
 erosionPlanes.csv, the files of a restarted run joined), prints its
@@ -26,9 +30,15 @@ Figures (t: time since the plume's onset, the series' first row):
   half of the run (least squares) [grains/s];
 - negative erosion: the first t after which N_e falls ONSET grains below
   its running maximum (none if it never does);
-- fractional collision number, averaged over a moving window of 1000
-  contact steps (Berger's, 5.9e-4 s): its peak and when, and its mean
-  over the last half of the run (the plateau);
+- depletion: the first t with N_e of at least DEPLETED of the grains
+  (none if never);
+- fractional collision number as Berger count it: the grains above the
+  erosion plane overlapping another grain at a contact step over the
+  grains above it, averaged over the last 1000 contact steps (erosionPlanes'
+  contactStepCollisions, weighted by each step's contactSteps; a series
+  without them: the end-of-step snapshot, fractionalCollisions, over a
+  window of 5.9e-4 s): its peak and when, and its mean over the last half
+  of the run (the plateau);
 - the planes' drop at the end [grain diameters].
 """
 
@@ -45,6 +55,7 @@ LX, LZ = 0.010, 0.005       # periodic box of the tutorial [m]
 D = 1e-3                    # grain diameter [m]
 N_GRAINS = 800
 ONSET = 5                   # grains: the erosion counted as begun
+DEPLETED = 0.95             # share of the grains: the bed counted as eroded
 WINDOW = 1000*5.88e-7       # Berger's moving average, 1000 contact steps [s]
 
 
@@ -85,6 +96,33 @@ def write_bed(case, seed=1, points=None, origin=None):
     return path
 
 
+PLUME_U0, PLUME_L = 200.0, 0.03     # the tutorial's profile [m/s], [m]
+RHO_GAS, T_GAS = 1.27, 500.0        # Berger's gas [kg/m^3], [K]
+
+
+def write_profile(case, u0=PLUME_U0, length=PLUME_L):
+    """CASE/constant/plumeProfile: rows (y rho Ux Uy Uz T) of
+    U_x = u0 tanh(y/length), every 0.25 mm to 2 mm, 0.5 mm to 50 mm,
+    10 mm to 1 m (at length 0.03 m linear interpolation is within
+    0.52 m/s, 0.3 %, of the tanh)."""
+    ys = ([0.25e-3*i for i in range(8)] + [0.5e-3*i for i in range(4, 100)]
+          + [0.05 + 0.01*i for i in range(96)])
+    path = os.path.join(case, "constant", "plumeProfile")
+    with open(path, "w") as f:
+        f.write("/*--------------------------------*- C++ -*----------------------------------*\\\n"
+                "  rarefiedMultiphaseFoam: tutorials/psi/regolithErosionBox\n"
+                "\\*---------------------------------------------------------------------------*/\n"
+                "// The plume's gas over the regolith, a table in y for prescribedGas\n"
+                "// (constant/grainsProperties, LothCoeffs/prescribed): rows\n"
+                "// (y [m]  rho [kg/m^3]  Ux Uy Uz [m/s]  T [K]), linearly interpolated.\n"
+                f"// Written by rmf.erosion profile: U_x(y) = {u0:g} m/s tanh(y/{length:g} m)\n"
+                "// at Berger's gas (README: the profile's calibration).\n(\n")
+        for y in ys:
+            f.write(f"    ({y:.6g} {RHO_GAS:g} {u0*math.tanh(y/length):.6f} 0 0 {T_GAS:g})\n")
+        f.write(")\n")
+    return path
+
+
 def read(case, cloud="grains"):
     """The erosionPlanes series of a run, its files in time order (a later
     start supersedes the rows of an earlier file from its start on): a
@@ -113,6 +151,25 @@ def moving_average(t, x, window=WINDOW):
     return (c[idx + 1] - c[start])/(idx + 1 - start)
 
 
+def collision_number(s, steps=1000):
+    """The fractional collision number of a series, averaged over the
+    last `steps` contact steps at each row (module docstring); None for
+    grains without resolved contacts."""
+    if not np.all(s["colliding"] >= 0):
+        return None
+    n = s.get("contactSteps")
+    if n is None or not np.any(n > 0):
+        return moving_average(s["time"], s["fractionalCollisions"])
+    f = np.where(n > 0, s["contactStepCollisions"], 0.0)*n
+    cn = np.concatenate([[0.0], np.cumsum(n)])
+    cf = np.concatenate([[0.0], np.cumsum(f)])
+    idx = np.arange(len(n))
+    # the first row whose steps still fall in the window ending at idx
+    start = np.searchsorted(cn, cn[idx + 1] - steps, side="right") - 1
+    start = np.clip(start, 0, idx)
+    return (cf[idx + 1] - cf[start])/np.maximum(cn[idx + 1] - cn[start], 1)
+
+
 def figures(s):
     """The figures of the module's docstring from a series s."""
     t = s["time"] - s["time"][0]
@@ -130,8 +187,10 @@ def figures(s):
     running = np.maximum.accumulate(ne)
     fallen = np.nonzero(ne <= running - ONSET)[0]
     out["negative"] = float(t[fallen[0]]) if len(fallen) else None
-    if np.all(s["colliding"] >= 0):
-        fcn = moving_average(s["time"], s["fractionalCollisions"])
+    gone = np.nonzero(ne >= DEPLETED*N_GRAINS)[0]
+    out["depleted"] = float(t[gone[0]]) if len(gone) else None
+    fcn = collision_number(s)
+    if fcn is not None:
         i = int(np.argmax(fcn))
         out["fcnPeak"], out["fcnPeakAt"] = float(fcn[i]), float(t[i])
         out["fcnPlateau"] = float(fcn[late].mean())
@@ -150,7 +209,8 @@ def summary_line(name, fig):
     return (f"{name}: onset {_fmt(fig['onset'], '.4f')} s, N_e(0.05/0.1/0.2 s)"
             f" {_fmt(fig['Ne0.05'], '.0f')}/{_fmt(fig['Ne0.1'], '.0f')}/{_fmt(fig['Ne0.2'], '.0f')},"
             f" rate {_fmt(fig['rate'], '.0f')} grains/s, negative erosion from"
-            f" {_fmt(fig['negative'], '.4f')} s, fractional collisions peak"
+            f" {_fmt(fig['negative'], '.4f')} s, {100*DEPLETED:.0f} % eroded at"
+            f" {_fmt(fig['depleted'], '.4f')} s, fractional collisions peak"
             f" {_fmt(fig['fcnPeak'], '.3f')} at {_fmt(fig['fcnPeakAt'], '.4f')} s,"
             f" plateau {_fmt(fig['fcnPlateau'], '.3f')}, planes down {fig['drop']:.2f} d,"
             f" {fig['escaped']} grains out at the top")
@@ -159,13 +219,15 @@ def summary_line(name, fig):
 def table(runs):
     """Markdown table of the figures of runs {name: figures}."""
     head = ("| variant | onset [s] | N_e 0.05 s | N_e 0.1 s | N_e 0.2 s | rate [1/s]"
-            " | negative from [s] | FCN peak | at [s] | FCN plateau | drop [d] |")
-    lines = [head, "|" + "---|"*11]
+            " | negative from [s] | depleted [s] | FCN peak | at [s] | FCN plateau"
+            " | drop [d] |")
+    lines = [head, "|" + "---|"*12]
     for name, f in runs.items():
         lines.append(
             f"| {name} | {_fmt(f['onset'], '.4f')} | {_fmt(f['Ne0.05'], '.0f')}"
             f" | {_fmt(f['Ne0.1'], '.0f')} | {_fmt(f['Ne0.2'], '.0f')} | {_fmt(f['rate'], '.0f')}"
-            f" | {_fmt(f['negative'], '.4f')} | {_fmt(f['fcnPeak'], '.3f')}"
+            f" | {_fmt(f['negative'], '.4f')} | {_fmt(f['depleted'], '.4f')}"
+            f" | {_fmt(f['fcnPeak'], '.3f')}"
             f" | {_fmt(f['fcnPeakAt'], '.4f')} | {_fmt(f['fcnPlateau'], '.3f')}"
             f" | {f['drop']:.2f} |")
     return "\n".join(lines)
@@ -192,8 +254,9 @@ def plot(series, output, title=None):
         b.plot(t, np.cumsum(s["up"]), color=colour, label=None if many else "up")
         b.plot(t, np.cumsum(s["down"]), color=colour, ls="--",
                label=None if many else "down")
-        if np.all(s["colliding"] >= 0):
-            c.plot(t, moving_average(s["time"], s["fractionalCollisions"]), color=colour)
+        fcn = collision_number(s)
+        if fcn is not None:
+            c.plot(t, fcn, color=colour)
         e.plot(t, 1e3*s["erosion"], color=colour, label=None if many else "erosion plane")
         e.plot(t, 1e3*s["anchoring"], color=colour, ls="--",
                label=None if many else "anchoring plane")
@@ -229,6 +292,10 @@ def main(argv=None):
     p = sub.add_parser("settled", help="CASE/constant/bedPositions from TIMEDIR's grains")
     p.add_argument("timedir")
     p.add_argument("case")
+    p = sub.add_parser("profile", help="write CASE/constant/plumeProfile")
+    p.add_argument("case")
+    p.add_argument("--u0", type=float, default=PLUME_U0)
+    p.add_argument("--length", type=float, default=PLUME_L)
     p = sub.add_parser("plot", help="figures and plot of one run")
     p.add_argument("case")
     p.add_argument("--png")
@@ -240,6 +307,9 @@ def main(argv=None):
 
     if args.command == "bed":
         print(write_bed(args.case, args.seed))
+        return 0
+    if args.command == "profile":
+        print(write_profile(args.case, args.u0, args.length))
         return 0
     if args.command == "settled":
         points = foam.read_positions(os.path.join(args.timedir, "lagrangian", "grains",

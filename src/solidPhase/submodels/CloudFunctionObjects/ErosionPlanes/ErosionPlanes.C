@@ -166,7 +166,7 @@ void Foam::ErosionPlanes<CloudType>::store()
     this->setModelProperty("nGrains0", nGrains0_);
     this->setModelProperty("drop", drop_);
     this->setModelProperty("above", above_.toc());
-    if (collisionless_)
+    if (collisionless_ && !airborne_)
     {
         this->setModelProperty("reached", reached_.toc());
     }
@@ -214,6 +214,14 @@ Foam::ErosionPlanes<CloudType>::ErosionPlanes
             this->coeffDict(), "collisionless", false
         )
     ),
+    airborne_
+    (
+        inputChecks::getChoiceOrDefault
+        (
+            this->coeffDict(), "collisionlessRule", "reached",
+            {"reached", "airborne"}
+        ) == "airborne"
+    ),
     up_(Zero),
     floor_(0),
     top_(0),
@@ -227,6 +235,8 @@ Foam::ErosionPlanes<CloudType>::ErosionPlanes
     above_(),
     reached_(),
     belowFloor_(false),
+    contactSteps_(0),
+    contactFractions_(0),
     csv_()
 {
     List<labelPair> grains;
@@ -242,7 +252,7 @@ Foam::ErosionPlanes<CloudType>::ErosionPlanes
         this->coeffDict(),
         {
             "type", "startTime", "anchoringDepth", "erosionHeight",
-            "topGrains", "collisionless"
+            "topGrains", "collisionless", "collisionlessRule"
         }
     );
 
@@ -271,7 +281,8 @@ Foam::ErosionPlanes<CloudType>::ErosionPlanes
         csv_.reset(new OFstream(dir/"erosionPlanes.csv"));
         csv_()
             << "time,erosionNumber,above,up,down,colliding,"
-            << "fractionalCollisions,bedTop,anchoring,erosion,grains" << nl;
+            << "fractionalCollisions,bedTop,anchoring,erosion,grains,"
+            << "contactSteps,contactStepCollisions" << nl;
         csv_().precision(10);
     }
 }
@@ -289,6 +300,7 @@ Foam::ErosionPlanes<CloudType>::ErosionPlanes
     erosionHeight_(ep.erosionHeight_),
     topGrains_(ep.topGrains_),
     collisionless_(ep.collisionless_),
+    airborne_(ep.airborne_),
     up_(ep.up_),
     floor_(ep.floor_),
     top_(ep.top_),
@@ -302,11 +314,40 @@ Foam::ErosionPlanes<CloudType>::ErosionPlanes
     above_(ep.above_),
     reached_(ep.reached_),
     belowFloor_(ep.belowFloor_),
+    contactSteps_(ep.contactSteps_),
+    contactFractions_(ep.contactFractions_),
     csv_()
 {}
 
 
 // * * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * //
+
+template<class CloudType>
+void Foam::ErosionPlanes<CloudType>::contactStep
+(
+    const UList<point>& x,
+    const UList<bool>& touching
+)
+{
+    if (!started_)
+    {
+        return;
+    }
+    const scalar hE = erosion();
+    label above = 0;
+    label colliding = 0;
+    forAll(x, i)
+    {
+        if ((x[i] & up_) > hE)
+        {
+            ++above;
+            colliding += touching[i];
+        }
+    }
+    ++contactSteps_;
+    contactFractions_ += above > 0 ? scalar(colliding)/above : 0;
+}
+
 
 template<class CloudType>
 void Foam::ErosionPlanes<CloudType>::postEvolve()
@@ -395,12 +436,16 @@ void Foam::ErosionPlanes<CloudType>::postEvolve()
             << time.value() << ',' << erosionNumber << ',' << nAbove << ','
             << nUp << ',' << nDown << ',' << colliding << ',' << fraction
             << ',' << bedTop << ',' << anchoring() << ',' << erosion()
-            << ',' << nGrains << nl;
+            << ',' << nGrains << ',' << contactSteps_ << ','
+            << (contactSteps_ > 0 ? contactFractions_/contactSteps_ : -1)
+            << nl;
     }
+    contactSteps_ = 0;
+    contactFractions_ = 0;
 
     above_.transfer(aboveNow);
 
-    if (collisionless_)
+    if (collisionless_ && !airborne_)
     {
         for (const parcelType& p : cloud)
         {

@@ -138,11 +138,13 @@ void Foam::CartesianContacts<CloudType>::gather(CloudType& cloud)
     R_.clear();
     I_.clear();
     off_.clear();
+    touching_.clear();
     dMax_ = 0;
     mMin_ = GREAT;
 
-    // Berger's collisionless box: erosionPlanes says which grains are out
-    const auto* planes =
+    // Berger's box: erosionPlanes says which grains are out
+    // (collisionless) and counts the colliding grains per sub-step
+    planes_ =
         ErosionPlanes<typename CloudType::kinematicCloudType>::find
         (
             cloud.functions()
@@ -159,13 +161,14 @@ void Foam::CartesianContacts<CloudType>::gather(CloudType& cloud)
         m_.append(p.mass());
         R_.append(p.d()/2);
         I_.append(p.momentOfInertia());
-        off_.append(planes && planes->contactsOff(p));
+        off_.append(planes_ && planes_->contactsOff(p));
         dMax_ = max(dMax_, p.d());
         mMin_ = min(mMin_, p.mass());
     }
 
     const label n = parcels_.size();
     const label nWalls = walls_.size();
+    touching_.setSize(n);
 
     std::unordered_map<std::int64_t, label> index(2*n);
     forAll(parcels_, i)
@@ -347,6 +350,7 @@ void Foam::CartesianContacts<CloudType>::contactForces(const scalar dt)
 {
     f_ = vector::zero;
     tau_ = vector::zero;
+    touching_ = false;
 
     for (pairEntry& e : pairs_)
     {
@@ -362,6 +366,9 @@ void Foam::CartesianContacts<CloudType>::contactForces(const scalar dt)
             e.spring = Zero;
             continue;
         }
+
+        touching_[i] = true;
+        touching_[j] = true;
 
         const scalar rMag = std::sqrt(r2);
         const vector n(r/(rMag + VSMALL));
@@ -485,7 +492,8 @@ Foam::CartesianContacts<CloudType>::CartesianContacts
     walls_(),
     nSubSteps_(0),
     dMax_(0),
-    mMin_(GREAT)
+    mMin_(GREAT),
+    planes_(nullptr)
 {
     const dictionary& coeffs = this->coeffDict();
 
@@ -537,7 +545,8 @@ Foam::CartesianContacts<CloudType>::CartesianContacts
     walls_(cm.walls_),
     nSubSteps_(cm.nSubSteps_),
     dMax_(cm.dMax_),
-    mMin_(cm.mMin_)
+    mMin_(cm.mMin_),
+    planes_(nullptr)
 {}
 
 
@@ -610,6 +619,10 @@ void Foam::CartesianContacts<CloudType>::advance
         }
 
         contactForces(dt);
+        if (planes_)
+        {
+            planes_->contactStep(x_, touching_);
+        }
 
         for (label i = 0; i < n; ++i)
         {
