@@ -30,7 +30,10 @@ erosionBox (tutorials/psi/regolithErosionBox, doc/physics.md 7.3)
              (DEM settings only: the parcel models resolve no contacts).
     Cost: the least CPU time over the seeds of the plume's run (the
     solver's ExecutionTime), over the reference's least; the settle is
-    shared and not counted.
+    shared and not counted.  A run that stops with a FatalError (a
+    setting past its stability limit) is reported as failed, with the
+    time and the error's first line, and has no errors; the setting's
+    cost is that of its finished runs.
     Full size: 0.2 s of plume, 3 seeds (15 minutes); --quick: 0.05 s of
     plume, 1 seed (2.5 minutes).
 
@@ -156,12 +159,20 @@ def write_outputs(scene, rows, errors, main_error, note, judged=None,
     least_base = min(r["cpu"] for r in rows if r["setting"] == base)
     summary = []
     for name in names:
-        runs = [r for r in rows if r["setting"] == name]
-        entry = {"setting": name, "label": runs[0]["label"], "seeds": len(runs),
-                 "cost": min(r["cpu"] for r in runs)/least_base,
+        every = [r for r in rows if r["setting"] == name]
+        failed = [r for r in every if r.get("failed")]
+        runs = [r for r in every if not r.get("failed")]
+        label = every[0]["label"]
+        if failed:
+            label += (f"; **failed** in {len(failed)} of {len(every)} seeds"
+                      f" (seed {failed[0]['seed']}, {failed[0]['failed']})")
+        cpu = min(r["cpu"] for r in runs) if runs else float("nan")
+        entry = {"setting": name, "label": label, "seeds": len(runs),
+                 "cost": cpu/least_base,
                  "costSd": float(np.std([r["cost"] for r in runs], ddof=1))
                  if len(runs) > 1 else 0.0,
-                 "cpu": min(r["cpu"] for r in runs)}
+                 "cpu": cpu}
+        runs = runs or every
         for e in errors:
             v = np.array([r[e] for r in runs], float)
             entry[e] = float(np.mean(np.abs(v))) if np.all(np.isfinite(v)) else float("nan")
@@ -216,8 +227,10 @@ def write_outputs(scene, rows, errors, main_error, note, judged=None,
             else:
                 cells.append("–")
         spread = f" ± {s['costSd']:.2f}" if s["seeds"] > 1 else ""
-        lines.append(f"| {s['setting']} | {s['label']} | {s['seeds']} | {s['cpu']:.1f} |"
-                     f" {s['cost']:.3f}{spread} | " + " | ".join(cells)
+        cost = f"{s['cost']:.3f}{spread}" if np.isfinite(s["cost"]) else "–"
+        cpu = f"{s['cpu']:.1f}" if np.isfinite(s["cpu"]) else "–"
+        lines.append(f"| {s['setting']} | {s['label']} | {s['seeds']} | {cpu} |"
+                     f" {cost} | " + " | ".join(cells)
                      + f" | {'yes' if i in front else ''} |")
     lines += ["", "Cheapest setting within "
               f"{100*TARGET:.0f} % of the reference in " + " and ".join(judged) + ": "
@@ -254,6 +267,20 @@ def cpu_time(log):
     return float(found[-1])
 
 
+def fatal_error(log):
+    """'t = T s: first line' (80 characters at most) of the FatalError
+    that stopped a solver's run, or None."""
+    with open(log) as f:
+        text = f.read()
+    m = re.search(r"--> FOAM FATAL (?:IO )?ERROR[^\n]*\n\s*([^\n]+)", text)
+    if not m:
+        return None
+    times = re.findall(r"^Time = (\S+)", text[:m.start()], re.M)
+    first = m.group(1).strip().split(" at (")[0]
+    first = first if len(first) <= 80 else first[:77] + "..."
+    return f"t = {times[-1] if times else '?'} s: {first}"
+
+
 def erosion_box(quick, seeds):
     plume = 0.05 if quick else 0.2
     tutorial = os.path.join(PROJECT, "tutorials", "psi", "regolithErosionBox")
@@ -272,27 +299,39 @@ def erosion_box(quick, seeds):
         series = {}
         for name, label in EROSION_SETTINGS:
             start = time.time()
-            subprocess.run(["./Allrun", "-variant", name, "-plume", str(plume)], cwd=case,
-                           check=True, stdout=subprocess.DEVNULL)
+            done = subprocess.run(["./Allrun", "-variant", name, "-plume", str(plume)],
+                                  cwd=case, stdout=subprocess.DEVNULL).returncode == 0
             wall = time.time() - start
             run = os.path.join(case, "runs", name)
-            s = erosion.read(run)
-            series[name] = s
-            fig = erosion.figures(s)
-            rows.append({"setting": name, "label": label, "seed": seed,
-                         "cpu": cpu_time(os.path.join(run, "log.rarefiedMultiphaseFoam")),
-                         "wall": round(wall, 2), "Ne": float(s["erosionNumber"][-1]),
-                         "rateValue": float(s["erosionNumber"][-1])/plume,
-                         "fcnValue": fig["fcnPlateau"]})
-            print(f"seed {seed} {name}: N_e {rows[-1]['Ne']:.0f}, CPU {rows[-1]['cpu']:.1f} s",
-                  flush=True)
+            log = os.path.join(run, "log.rarefiedMultiphaseFoam")
+            failed = None if done else fatal_error(log)
+            if failed is None and not done:
+                raise RuntimeError(f"{case}: Allrun -variant {name} failed")
+            row = {"setting": name, "label": label, "seed": seed, "cpu": cpu_time(log),
+                   "wall": round(wall, 2), "failed": failed or ""}
+            if failed:
+                row.update({"Ne": float("nan"), "rateValue": float("nan"),
+                            "fcnValue": float("nan")})
+                print(f"seed {seed} {name}: failed, {failed}", flush=True)
+            else:
+                s = erosion.read(run)
+                series[name] = s
+                row.update({"Ne": float(s["erosionNumber"][-1]),
+                            "rateValue": float(s["erosionNumber"][-1])/plume,
+                            "fcnValue": erosion.figures(s)["fcnPlateau"]})
+                print(f"seed {seed} {name}: N_e {row['Ne']:.0f}, CPU {row['cpu']:.1f} s",
+                      flush=True)
+            rows.append(row)
         ref = next(r for r in rows if r["seed"] == seed and r["setting"] == "base")
         sr = series["base"]
         for r in rows:
             if r["seed"] != seed:
                 continue
-            s = series[r["setting"]]
             r["cost"] = r["cpu"]/ref["cpu"]
+            if r["failed"]:
+                r["rate"] = r["curve"] = r["fcn"] = float("nan")
+                continue
+            s = series[r["setting"]]
             r["rate"] = relative_error(r["rateValue"], ref["rateValue"])
             r["curve"] = curve_error(s["time"] - s["time"][0], s["erosionNumber"],
                                      sr["time"] - sr["time"][0], sr["erosionNumber"], grid)
