@@ -206,6 +206,19 @@ def test_region_outside_mesh(meshed):
     expect(out, INIT, "positions outside the mesh")
 
 
+def test_positions_file_missing(meshed):
+    """A positionsFile region naming a file that constant/ does not hold
+    (upstream's reader stops with a plain FatalError, "cannot find
+    file", without the dictionary or the keyword; the fuzz found it)."""
+    case = with_entry(meshed, "positionsMissing", INIT, REGION + "type", "positionsFile")
+    for key in ("min", "max", "nParcels"):
+        subprocess.run(["foamDictionary", "-entry", REGION + key, "-remove", INIT],
+                       cwd=case, check=True, stdout=subprocess.DEVNULL)
+    foam.set_entry(case, INIT, REGION + "file", "noSuchPoints")
+    out = run_failing(case, "rarefiedMultiphaseInitialise")
+    expect(out, INIT, *named("file", "noSuchPoints"), valid="a file of points in constant/")
+
+
 # Unknown and misspelt keywords (inputChecks::rejectUnknown where the
 # project defines every keyword, rejectMisspelt where upstream's readers
 # share the dictionary or users keep variables): the message names the

@@ -240,6 +240,30 @@ def test_erosion_box_parcels():
     assert ok_bed and ok_account
 
 
+def test_collision_number_window():
+    """rmf.erosion's 1000-contact-step average of Berger's count, by hand:
+    rows of 0, 500, 500, 500 contact steps with step fractions -, 0.2,
+    0.4, 0.6 average 0, 0.2, (0.2 + 0.4)/2 = 0.3 and (0.4 + 0.6)/2 = 0.5
+    (each window the last rows holding at least 1000 steps, weighted by
+    their steps); a series without the counts falls back to the
+    end-of-step snapshot's moving average; grains without contacts give
+    none."""
+    s = {"time": np.array([0.0, 1e-4, 2e-4, 3e-4]), "colliding": np.zeros(4),
+         "fractionalCollisions": np.array([0.0, 1.0, 1.0, 1.0]),
+         "contactSteps": np.array([0, 500, 500, 500]),
+         "contactStepCollisions": np.array([-1, 0.2, 0.4, 0.6])}
+    got = erosion.collision_number(s)
+    ok_window = report("collision number over 1000 contact steps", np.allclose(
+        got, [0, 0.2, 0.3, 0.5], rtol=0, atol=1e-12), f"{got}")
+    snapshot = {k: s[k] for k in ("time", "colliding", "fractionalCollisions")}
+    ok_old = report("without the counts: the snapshot's average", np.allclose(
+        erosion.collision_number(snapshot),
+        erosion.moving_average(s["time"], s["fractionalCollisions"])), "")
+    ok_none = report("no contacts resolved: none", erosion.collision_number(
+        dict(s, colliding=-np.ones(4))) is None, "")
+    assert ok_window and ok_old and ok_none
+
+
 LONG = os.path.join(foam.PROJECT_DIR, "build", "tutorials", "regolithErosionBoxLong")
 LONG_RUNS = (("base", 0.2), ("collisionless", 0.1), ("nondissipative", 0.1),
              ("erosion16", 0.2))

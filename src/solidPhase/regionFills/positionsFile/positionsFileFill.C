@@ -15,6 +15,46 @@
 makeRegionFill(positionsFileFill);
 
 
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+
+//- The points file named by keyword file, which must exist in constant/
+Foam::IOobject positionsFile
+(
+    const Foam::dictionary& dict,
+    const Foam::regionFill::cloudSetup& setup
+)
+{
+    using namespace Foam;
+    const word name
+    (
+        inputChecks::getName(dict, "file", "a file of points in constant/")
+    );
+    IOobject io
+    (
+        name,
+        setup.mesh.time().constant(),
+        setup.mesh,
+        IOobject::MUST_READ,
+        IOobject::NO_WRITE,
+        false
+    );
+    if (!io.typeHeaderOk<vectorIOField>(false))
+    {
+        inputChecks::badValue
+        (
+            dict, "file", name,
+            "a file of points in constant/ (no file " + name + " there)"
+        );
+    }
+    return io;
+}
+
+} // End anonymous namespace
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::regionFills::positionsFileFill::positionsFileFill
@@ -24,24 +64,7 @@ Foam::regionFills::positionsFileFill::positionsFileFill
 )
 :
     regionFill(dict, setup, {"file"}),
-    positions_
-    (
-        vectorIOField
-        (
-            IOobject
-            (
-                inputChecks::getName
-                (
-                    dict, "file", "a file of points in constant/"
-                ),
-                setup.mesh.time().constant(),
-                setup.mesh,
-                IOobject::MUST_READ,
-                IOobject::NO_WRITE,
-                false
-            )
-        )
-    )
+    positions_(vectorIOField(positionsFile(dict, setup)))
 {}
 
 
