@@ -175,18 +175,18 @@ template<class CloudType>
 void Foam::PackingModels::TwoSided<CloudType>::predictMean()
 {
     const fvMesh& mesh = this->owner().mesh();
-    AveragingMethod<vector>& u = uMean_();
     if (!started_)
     {
-        u = *uAverage_;
+        uMean_ = uAverage_;
     }
     else if (!predict_)
     {
-        u = uStart_();
+        uMean_ = &uStart_();
     }
     else
     {
         // u_m = u_s + (1 - h) f and h, per node and component
+        AveragingMethod<vector>& u = uPredicted_();
         const AveragingMethod<vector>& after = *uAverage_;
         const AveragingMethod<vector>& uStart = uStart_();
         const AveragingMethod<vector>& c = correction_();
@@ -203,8 +203,9 @@ void Foam::PackingModels::TwoSided<CloudType>::predictMean()
                 }
             }
         }
+        uMean_ = &u;
     }
-    uCell_ = u.primitiveField();
+    uCell_ = uMean_->primitiveField();
     uNbr_.setSize(mesh.nBoundaryFaces());
     syncTools::swapBoundaryCellList(mesh, uCell_, uNbr_);
 
@@ -284,6 +285,7 @@ Foam::PackingModels::TwoSided<CloudType>::TwoSided
     uStart_(nullptr),
     correction_(nullptr),
     held_(nullptr),
+    uPredicted_(nullptr),
     uMean_(nullptr),
     uEnd_(nullptr),
     uCell_(),
@@ -317,6 +319,7 @@ Foam::PackingModels::TwoSided<CloudType>::TwoSided
     uStart_(nullptr),
     correction_(nullptr),
     held_(nullptr),
+    uPredicted_(nullptr),
     uMean_(nullptr),
     uEnd_(nullptr),
     tauGradCell_(),
@@ -364,9 +367,10 @@ void Foam::PackingModels::TwoSided<CloudType>::cacheFields(const bool store)
             uStart_ =
                 cloudAverages::make<vector>(cloud, "twoSidedStartVelocity");
             uEnd_ = cloudAverages::make<vector>(cloud, "twoSidedEndVelocity");
-            uMean_ = cloudAverages::make<vector>(cloud, "twoSidedMeanVelocity");
             if (predict_)
             {
+                uPredicted_ =
+                    cloudAverages::make<vector>(cloud, "twoSidedMeanVelocity");
                 correction_ =
                     cloudAverages::make<vector>(cloud, "twoSidedCorrection");
                 held_ = cloudAverages::make<vector>(cloud, "twoSidedHeld");
