@@ -102,6 +102,13 @@ Observables, each a function of this module:
    found).
 8. Grain temperature (temperatures): real-grain weighted histogram of T,
    min, max and mean.
+9. Validity of binary collisions (binary_validity): the real-grain
+   fraction of the parcels in cells whose alpha.grains exceeds alphaValid
+   (0.1, NTCHardSphere's default: above it a grain is no longer free
+   between binary collisions, doc/physics.md 5.2), over all parcels.
+10. Grains out of the free-molecular regime (transitional): the parcels in
+   cells with 0 < Kn_p < KnSwitch (10, the adaptive coupling's default):
+   their real-grain fraction and mean temperature.
 
 Missing data (no parcels at a time, no gas fields at time 0, no Knp.grains)
 gives None for that observable and a note saying why; summary.md lists
@@ -134,6 +141,8 @@ PEAK_REGION = 0.5               # stagnation peak sought in this fraction of the
                                 # nozzle-surface gap next to the surface
 SHELL = 0.5e-3                  # half width of the crossing shell [m]
 STAGNATION_HEIGHT = 5e-3        # stagnation region height without a shock [m]
+ALPHA_VALID = 0.1               # binary collisions valid below (NTCHardSphere)
+KN_SWITCH = 10                  # Kn_p below which a grain is not free-molecular
 HISTOGRAM_TIMES = 4             # default number of times in the histograms
 MAX_POLYGONS = 200000           # Kn_p map cell by cell up to this many cells,
                                 # interpolated between centres beyond
@@ -581,6 +590,33 @@ def temperatures(p):
                 mean=float(np.average(T, weights=w)))
 
 
+def binary_validity(p, alpha, alpha_valid=ALPHA_VALID):
+    """Real-grain fraction of the parcels in cells above alpha_valid
+    (module docstring, item 9): dict(fraction, parcels), None without
+    parcels or alpha."""
+    if p is None or alpha is None:
+        return None
+    above = alpha[p["cell"]] > alpha_valid
+    return dict(fraction=float(p["n"][above].sum()/p["n"].sum()),
+                parcels=int(above.sum()))
+
+
+def transitional(p, knp, kn_switch=KN_SWITCH):
+    """The grains in cells with 0 < Kn_p < kn_switch (module docstring,
+    item 10): dict(fraction [real grains], parcels, T [their real-grain
+    mean temperature, None when none or T not written]), None without
+    parcels or Kn_p."""
+    if p is None or knp is None:
+        return None
+    k = knp[p["cell"]]
+    sel = (k > 0) & (k < kn_switch)
+    T = None
+    if sel.any() and p["T"] is not None:
+        T = float(np.average(p["T"][sel], weights=p["n"][sel]))
+    return dict(fraction=float(p["n"][sel].sum()/p["n"].sum()),
+                parcels=int(sel.sum()), T=T)
+
+
 # ----------------------------------------------------------- analysis ----
 
 def analyse(case, dr=None, dx=None, shell=SHELL, radial_weight=None):
@@ -629,12 +665,15 @@ def analyse(case, dr=None, dx=None, shell=SHELL, radial_weight=None):
                 notes.append(density_note(case, name))
             if row["shock"]["standoff"] is None:
                 notes.append(f"t = {t}: no shock on the axis ({row['shock']['note']})")
-        row["alpha"] = max_alpha(field(case, t, "alpha." + CLOUD, cells["n"]))
+        alpha = field(case, t, "alpha." + CLOUD, cells["n"])
+        row["alpha"] = max_alpha(alpha)
+        row["validity"] = binary_validity(p, alpha)
         if row["alpha"] is None:
             notes.append(f"t = {t}: no alpha.{CLOUD}")
         knp, source = knp_cells(case, t, cells["n"], p)
         row["knp"] = knp
         row["knp_source"] = source
+        row["transitional"] = transitional(p, knp)
         if knp is None:
             notes.append(f"t = {t}: no Kn_p ({source})")
             row["knp_min"] = None

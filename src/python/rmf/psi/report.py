@@ -7,11 +7,12 @@ import os
 
 import numpy as np
 
-from .observables import (AXIS_BAND, AXIS_FRACTION, DENSITIES, HISTOGRAM_TIMES,
-                          JET_QUANTILE, MIN_PARCELS, PEAK_REGION, SHOCK_RISE,
-                          SHOCK_SUSTAIN, SIGNIFICANCE, SLAB_PARCELS, SMOOTH_CELLS,
-                          STAGNATION_HEIGHT, SURFACE_FRACTION, SURFACE_QUANTILE,
-                          analyse, last, nearest_row, series, value)
+from .observables import (ALPHA_VALID, AXIS_BAND, AXIS_FRACTION, DENSITIES,
+                          HISTOGRAM_TIMES, JET_QUANTILE, KN_SWITCH, MIN_PARCELS,
+                          PEAK_REGION, SHOCK_RISE, SHOCK_SUSTAIN, SIGNIFICANCE,
+                          SLAB_PARCELS, SMOOTH_CELLS, STAGNATION_HEIGHT,
+                          SURFACE_FRACTION, SURFACE_QUANTILE, analyse, last,
+                          nearest_row, series, value)
 from .plots import _plt, plot_case, plot_crater, plot_histogram, plot_knp, plot_timeseries
 
 
@@ -35,8 +36,12 @@ COLUMNS = (
     ("toward axis (flux)", "crossing", "fraction_toward", 1, "{:.3f}"),
     ("toward axis (grains)", "crossing", "fraction_toward_grains", 1, "{:.3f}"),
     ("max alpha", "alpha", "max", 1, "{:.4g}"),
+    ("above alphaValid", "validity", "fraction", 1, "{:.3g}"),
     ("min Kn_p stagnation", "knp_min", "min", 1, "{:.3g}"),
+    ("Kn_p < 10", "transitional", "fraction", 1, "{:.3g}"),
+    ("T_p mean Kn_p < 10 [K]", "transitional", "T", 1, "{:.2f}"),
     ("T_p min [K]", "T", "min", 1, "{:.1f}"),
+    ("T_p mean [K]", "T", "mean", 1, "{:.2f}"),
     ("T_p max [K]", "T", "max", 1, "{:.1f}"),
 )
 
@@ -170,6 +175,10 @@ def definitions(analysis):
         "- Kn_p: Knp.grains (else lambda.gas / real-grain mean d in the cell); "
         f"stagnation region: r <= nozzleRadius, height <= shock standoff "
         f"({1e3*STAGNATION_HEIGHT:g} mm without a shock).",
+        f"- Above alphaValid: real-grain fraction of the parcels in cells with alpha > "
+        f"{ALPHA_VALID:g} (binary collisions not valid there); Kn_p < {KN_SWITCH:g}: "
+        "real-grain fraction of the parcels in cells with 0 < Kn_p < "
+        f"{KN_SWITCH:g} (not free-molecular) and their mean T.",
     ]
 
 
