@@ -100,11 +100,21 @@ Checks (each able to fail):
   cell per step at most, test_crater_transit) and the layer pushed down
   under the nozzle by more than 3 sigma; with --long the whole 100 us
   (about 10 minutes), which must erode the layer (test_crater_erodes).
+- Cao's findings (README, "Cao's findings"), reduced: the crater
+  settings' first 20 us, serial, once per model compared (the hybrid
+  with oneWay and with adaptive coupling, stochastic on the reference's
+  dilute layer; the main job's run is the crater one), about 6 minutes:
+  the one-way models' gas identical to the bit (exact),
+  the grains out of the free-molecular regime far cooler with the two-way
+  coupling than with oneWay (direction, against the seeds' spread of
+  reference-cao.json, made by make_reference.py --cao), and the
+  reference's dilute stochastic layer far from alphaValid.
 
 Family-wise error (testing/README.md): rmf_testing.MODULE_ALPHA = 2.5e-4,
-shared by the 19 prediction intervals against the stored ensembles
-(COMPARISONS; Bonferroni: t_23 = 5.5 for the observables, t_7 = 10.8
-for the vibration's level).  The other checks are exact (counts,
+shared by the 19 prediction intervals against the stored ensembles and
+the direction of the grains' heating (COMPARISONS; Bonferroni: t_23 = 5.5
+for the observables, t_7 = 10.8 for the vibration's level, one-sided t_3
+= 44 for the heating).  The other checks are exact (counts,
 accounts, the flux within the faces' rounding) or look for an effect
 many times its noise (the layer pushed: 5 se against a measured 8-30 se;
 the crater's drop: 3 sigma against 54 sigma), whose chance of failing
@@ -142,13 +152,14 @@ T_GRAINS = 200.0                    # grains' initial temperature [K]
 
 # The files whose randomSeed entries seed every stream of the hybrid demo
 SEEDED = ("constant/dsmcProperties", "constant/grainsProperties",
-          "system/grainsInitialiseDict", "settings/hybrid")
+          "system/grainsInitialiseDict", "settings/hybrid", "settings/stochastic")
 
 # The module's family-wise error (testing/README.md): rmf_testing's
 # MODULE_ALPHA shared (Bonferroni) by the prediction intervals against the
 # stored ensembles: 6 observables for the serial run, for the 2-rank run
-# and for their difference, and the vibration's level
-COMPARISONS = 19
+# and for their difference, the vibration's level, and the direction of
+# the grains' heating between the couplings (test_cao_heating_two_way)
+COMPARISONS = 20
 
 
 def entry(case, path, key):
@@ -162,7 +173,8 @@ def entry(case, path, key):
 
 
 def prepare(name, seed=None, steps=STEPS, writes=2, max_imbalance=None,
-            settings="demo", parcels=PARCELS):
+            settings="demo", parcels=PARCELS, variant="hybrid", coupling=None,
+            dust=None):
     """The reduced case in build/tutorials/apolloScaledPSI/<name>, every
     randomSeed of its files (gas, grain fill, NTC, coupling) set to seed
     (None: seed 1 of the suite's seed set, outside the stored ensembles),
@@ -170,13 +182,15 @@ def prepare(name, seed=None, steps=STEPS, writes=2, max_imbalance=None,
     whose imbalance exceeds max_imbalance (None: never, one segment), the
     imbalance and the costs counted (loadBalance measure work, so that no
     result depends on the machine's timings); the settings file's layer
-    of parcels parcels (None: the file's)."""
+    of parcels parcels (None: the file's); coupling: the grains'
+    interphaseCoupling instead of the tutorial's twoWayIndirect; dust: the
+    <variant>Dust entries of the settings file to set (alpha0, nParcels)."""
     case = os.path.join(BUILD, name)
     seed = rmf_testing.seed(1) if seed is None else seed
     if os.path.exists(case):
         shutil.rmtree(case)
     shutil.copytree(HERE, case, ignore=shutil.ignore_patterns(
-        "test_*.py", "make_reference.py", "reference.json", "__pycache__",
+        "test_*.py", "make_reference.py", "reference*.json", "__pycache__",
         "log.*", "observables", "processor*",
         "[1-9]*", "polyMesh", "lagrangian", "uniform", "*SigmaTcRMax"))
     for path in SEEDED:
@@ -197,13 +211,18 @@ def prepare(name, seed=None, steps=STEPS, writes=2, max_imbalance=None,
                     r"(maxImbalance[^\n]*\n)", r"\g<1>    measure         work;\n")
     # (foamDictionary -set rewrites the file with hybridDust's $MPPICDust
     # expanded: set both)
-    for dust in ("MPPICDust", "hybridDust") if parcels else ():
-        foam.set_entry(case, path, f"{dust}/nParcels", parcels)
+    for layer in ("MPPICDust", "hybridDust") if parcels else ():
+        foam.set_entry(case, path, f"{layer}/nParcels", parcels)
+    for key, value in (dust or {}).items():
+        foam.set_entry(case, path, f"{variant}Dust/{key}", value)
+    if coupling:
+        foam.substitute(os.path.join(case, "constant/grainsProperties"),
+                        r"(interphaseCoupling\s+)twoWayIndirect;", rf"\g<1>{coupling};")
     return case
 
 
-def run(case, parallel=False, vibration=False, settings="demo"):
-    proc = subprocess.run([os.path.join(case, "Allrun"), "-variant", "hybrid",
+def run(case, parallel=False, vibration=False, settings="demo", variant="hybrid"):
+    proc = subprocess.run([os.path.join(case, "Allrun"), "-variant", variant,
                            "-settings", settings] + (["-parallel"] if parallel else [])
                           + (["-vibration"] if vibration else []),
                           cwd=case, capture_output=True, text=True)
@@ -798,4 +817,124 @@ def test_crater_erodes():
           f"{drop:.3f} +- {sigma:.3f} mm, crater depth {depth:.3f} +- {depth_sigma:.3f} "
           f"mm (3 sigma, sigma at least the table's rounding 0.001 mm), eroded axis "
           f"annulus {eroded:.3f} (> 0.1), ejecta mean speed {speed:.1f} m/s (> 10)")
+    assert ok
+
+
+# Cao et al.'s findings (README, "Cao's findings"), reduced: the crater
+# settings' first 20 us, serial, 5000 parcels (15 000 for the reference's
+# dilute stochastic layer), one run per model with seed 1 of the suite's
+# set; the main job's run is the crater fixture's (the same case)
+CAO = {
+    "MPPIC": dict(variant="MPPIC"),
+    "stochastic": dict(variant="stochastic"),
+    # the stochastic model on the MPPIC layer (alpha 0.025)
+    "stochasticDense": dict(variant="stochastic",
+                            dust=dict(alpha0=0.025, nParcels=5000)),
+    "oneWay": dict(variant="hybrid", coupling="oneWay"),
+    "adaptive": dict(variant="hybrid", coupling="adaptive"),
+    "twoWay": dict(variant="hybrid"),       # the main job: the crater fixture
+}
+# rmf.psi's observables compared between the models (summary.md columns)
+CAO_OBSERVABLES = ("eroded layer", "eroded axis", "shock standoff [mm]",
+                   "above alphaValid", "Kn_p < 10", "T_p mean Kn_p < 10 [K]",
+                   "T_p mean [K]")
+
+
+def cao_case(name, seed=None, folder="cao"):
+    """One model of CAO, prepared and run (the crater fixture's settings)."""
+    c = CAO[name]
+    case = prepare(os.path.join(folder, f"{name}{'' if seed is None else seed}"),
+                   seed=seed, steps=CRATER_STEPS, settings="crater", parcels=None,
+                   variant=c["variant"], coupling=c.get("coupling"), dust=c.get("dust"))
+    return run(case, settings="crater", variant=c["variant"])
+
+
+def cao_observables(case):
+    """CAO_OBSERVABLES at the last write (None where rmf.psi has none)."""
+    row = last_row(case)
+    return {k: None if row[k] == "n/a" else float(row[k]) for k in CAO_OBSERVABLES}
+
+
+def cao_reference():
+    """reference-cao.json (make_reference.py --cao): {model: {observable:
+    array over the seeds}} and the number of seeds."""
+    with open(os.path.join(HERE, "reference-cao.json")) as f:
+        ref = json.load(f)
+    values = {name: {k: np.array([r[k] for r in runs], dtype=float)
+                     for k in CAO_OBSERVABLES}
+              for name, runs in ref["models"].items()}
+    return values, min(len(runs) for runs in ref["models"].values())
+
+
+@pytest.fixture(scope="module")
+def cao(crater):
+    """The models of CAO the checks below compare, with seed 1 of the
+    suite's set, serial, 20 us (about 115 s each); the main job's run is
+    the crater fixture's.  (MPPIC and stochasticDense are in the stored
+    ensemble and the README, not in a check.)"""
+    cases = {name: cao_case(name) for name in ("oneWay", "adaptive", "stochastic")}
+    cases["twoWay"] = crater
+    return cases
+
+
+def test_cao_one_way_gas(cao):
+    """oneWay and adaptive are one-way: the grains never act on the gas,
+    and both runs draw the gas's streams from the same seed, so their gas
+    is the same to the bit whatever the grains do (the pairing the
+    README's temperature comparison rests on): the gas's batch means
+    byte-identical at every write and the simulators present equal.  A
+    coupling that leaked into the gas, or a gas stream drawn by the grains,
+    breaks it."""
+    a, b = cao["oneWay"], cao["adaptive"]
+    differing = []
+    for time in foam.times(a)[1:]:
+        for name in ("rhoNMean", "momentumMean", "linearKEMean", "internalEMean"):
+            with open(os.path.join(a, time, name), "rb") as f, \
+                    open(os.path.join(b, time, name), "rb") as g:
+                if f.read() != g.read():
+                    differing.append(f"{time}/{name}")
+    present = [last(solver_log(c), "Simulators present")[0] for c in (a, b)]
+    ok = not differing and present[0] == present[1]
+    print(f"\n{'PASS' if ok else 'FAIL'} apolloScaledPSI oneWay/adaptive gas: fields "
+          f"differing {differing or 'none'}, simulators present {present[0]:.0f} / "
+          f"{present[1]:.0f}")
+    assert ok
+
+
+def test_cao_heating_two_way(cao):
+    """The grains out of the free-molecular regime (cells with
+    0 < Kn_p < 10) are far cooler with the main job's twoWayIndirect
+    coupling than with oneWay (README, "Cao's findings"): the layer holds
+    and cools the gas that heats its grains, where a one-way grain sees
+    the jet's gas as if no grain were there.  Direction checked:
+    T(oneWay) - T(twoWay) above t sqrt(sd_1^2 + sd_2^2), the sds the
+    stored ensembles' (reference-cao.json, seeds 2..5), t one-sided
+    Student's with K - 1 degrees of freedom at the module's family-wise
+    error (COMPARISONS).  Measured in the ensembles: 311.9 +- 1.1 K
+    against 205.6 +- 0.2 K, a difference of 92 sds against t = 44."""
+    values, K = cao_reference()
+    key = "T_p mean Kn_p < 10 [K]"
+    one, two = (cao_observables(cao[m])[key] for m in ("oneWay", "twoWay"))
+    sd = math.hypot(values["oneWay"][key].std(ddof=1), values["twoWay"][key].std(ddof=1))
+    t_crit = rmf_testing.t_limit(K - 1, COMPARISONS, two_sided=False)
+    ok = one is not None and two is not None and one - two > t_crit*sd
+    print(f"\n{'PASS' if ok else 'FAIL'} apolloScaledPSI Kn_p < 10 grains at 20 us: "
+          f"oneWay {one} K, twoWay {two} K, difference above {t_crit*sd:.3g} K "
+          f"(t {t_crit:.3g} x sd {sd:.3g} K of the ensembles, {K} seeds)")
+    assert ok
+
+
+def test_cao_dilute_layer_binary(cao):
+    """The reference's dilute stochastic layer (alpha 2.5e-5) stays dilute
+    under the jet: no parcel in a cell above alphaValid (0.1, where binary
+    collisions stop being valid) and the largest alpha below the hybrid's
+    alphaSwitch (0.01, where the project hands NTC over to MPPIC): the
+    plume compresses it (README: max alpha 7e-5-1e-4 at 20 us, 3.5e-4 at
+    most over 100 us), a hundred times short of either.  The layer of the
+    same grains at MPPIC's alpha 0.025 does cross alphaValid (README)."""
+    row = last_row(cao["stochastic"])
+    above, peak = float(row["above alphaValid"]), float(row["max alpha"])
+    ok = above == 0 and peak < 0.01
+    print(f"\n{'PASS' if ok else 'FAIL'} apolloScaledPSI dilute stochastic layer at "
+          f"20 us: above alphaValid {above}, max alpha {peak:.3g} (< 0.01)")
     assert ok
