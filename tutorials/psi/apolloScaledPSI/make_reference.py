@@ -44,7 +44,7 @@ def main():
     if cao:
         jobs = [(name, k) for k in seeds for name in t.CAO]
         if reuse:
-            cases = [os.path.join(t.BUILD, "cao", f"{name}{k}") for name, k in jobs]
+            cases = [os.path.join(t.BUILD, t.cao_dir(name, k)) for name, k in jobs]
         else:
             with ThreadPoolExecutor(max_workers=2) as pool:
                 cases = list(pool.map(lambda job: t.cao_case(*job), jobs))
