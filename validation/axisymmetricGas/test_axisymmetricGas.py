@@ -287,15 +287,129 @@ def test_keyword_without_axisymmetric(meshed):
         assert text in out, text
 
 
-def test_no_cartesian_move(meshed):
-    """The Cartesian move (doc/physics.md 2.6) is refused in the axisymmetric
-    mode, whose wedge cells are not boxes."""
-    case = foam.copy_case(meshed, os.path.join(BUILD, "cartesianTracking"))
-    foam.set_entry(case, "constant/dsmcProperties", "tracking", "cartesian")
-    out = run_failing(case, "rarefiedMultiphaseFoam")
-    for text in ("FOAM FATAL IO ERROR", "constant/dsmcProperties", "tracking",
-                 "cartesian", "valid: one of barycentric"):
-        assert text in out, text
+WALK_STEPS = 10         # steps of test_wedge_walk_exact
+WALK_TOL = 1e-9         # m and (x 1e3) m/s: round-off, 1e-7 of a 5 mm cell
+AXIS_ROW = 0.005        # m: outer radius of the axis cells (prisms, not walked)
+
+
+def _walk_state(case, time):
+    """The simulators of case at time in the order of their identities:
+    identities, positions, cells, velocities."""
+    path = os.path.join(case, time, "lagrangian", "dsmc")
+    ident = foam.read_list(os.path.join(path, "origId"))
+    order = np.argsort(ident, kind="stable")
+    x, cells = foam.read_positions(os.path.join(path, "positions"), cells=True)
+    U = foam.read_list(os.path.join(path, "U"))
+    return ident[order], x[order], cells[order], U[order]
+
+
+def _collisionless(name, outer, ends, steps):
+    """The unweighted wedge (15 000 simulators) without collisions or
+    inflow, its outer and end patches of the given types, initialised,
+    written once after steps steps with 17 digits."""
+    base = foam.copy_setup(CASE, os.path.join(BUILD, name))
+    foam.substitute(os.path.join(base, "system", "blockMeshDict"),
+                    r"outerType\s+wall;", f"outerType {outer};")
+    foam.substitute(os.path.join(base, "system", "blockMeshDict"),
+                    r"ends\s*\{\s*type wall;", f"ends {{ type {ends};")
+    for entry, value in (("maxRadialWeight", 1), ("nEquivalentParticles", 1.8e10),
+                         ("BinaryCollisionModel", "none"),
+                         ("InflowBoundaryModel", "none"),
+                         ("randomSeed", seed(1))):
+        foam.set_entry(base, "constant/dsmcProperties", entry, value)
+    foam.set_entry(base, "system/dsmcInitialiseDict", "randomSeed", seed(1))
+    foam.set_entry(base, "system/controlDict", "writePrecision", 17)
+    foam.set_steps(base, steps)
+    foam.run(base, "blockMesh")
+    foam.run(base, "rarefiedMultiphaseInitialise")
+    return base
+
+
+def test_specular_wedge():
+    """Simulators moving fast azimuthally along a specular outer wall, and
+    into its corners with the specular end walls, used to hang the run
+    (doc/physics.md 6: each reflection advanced them by a few ulps).  The
+    closed unweighted wedge with specular walls and no collisions runs 40
+    steps; specular reflection and the turn into the plane keep every
+    speed, so the simulators' kinetic energy stays as it was (to 1e-12
+    relative: round-off), none is lost and all stay in the wedge (r at most
+    the outer face's radius, 0 <= x <= 0.05 m, to 1e-12 m).  Deterministic."""
+    base = _collisionless("specular", "wall", "wall", 40)
+    foam.set_entry(base, "constant/dsmcProperties", "WallInteractionModel",
+                   "SpecularReflection")
+    log = foam.run(base, "rarefiedMultiphaseFoam")
+    _, x0, _, U0 = _walk_state(base, "0")
+    _, x1, _, U1 = _walk_state(base, foam.latest_time(base))
+    e0, e1 = (U0**2).sum(), (U1**2).sum()
+    out = foam.log_values(log, "Simulators in / out since start")[-1]
+    r_out = 0.0499881014 + 1e-12
+    inside = (np.hypot(x1[:, 1], x1[:, 2]) <= r_out).all() \
+        and (x1[:, 0] >= -1e-12).all() and (x1[:, 0] <= 0.05 + 1e-12).all()
+    ok = len(x1) == len(x0) and abs(e1/e0 - 1) < 1e-12 and out.sum() == 0 and inside
+    assert _report(ok, "specular wedge",
+                   f"{len(x0)} -> {len(x1)} simulators, in/out {out.tolist()}, "
+                   f"kinetic energy ratio - 1 = {e1/e0 - 1:.3g} (limit 1e-12), "
+                   f"all in the wedge: {inside}")
+
+
+def test_wedge_walk_exact():
+    """The axisymmetric mode's Cartesian move (tracking cartesian, wedgeWalk,
+    doc/physics.md 2.6) ends each path at its analytic end.  The unweighted
+    wedge with every boundary open (no walls, no inflow) and no collisions
+    moves its 15 000 simulators WALK_STEPS = 10 steps of 5 us (a most
+    probable speed crosses 3.5 cells); a simulator still in then ended on
+    the straight 3-D line from its start's image (x, y, 0) with its first
+    velocity, rotated into the plane: x = x0 + T u, r = |(y0 + T v_y, T v_z)|,
+    its velocity turned by the same angle.  Expected, for every simulator
+    whose line keeps clear of the axis cells (r > AXIS_ROW all along; those
+    cells are prisms, not walked, and upstream's tracking takes them):
+    position and velocity within WALK_TOL (1e-9 m, 1e-6 m/s: round-off).
+    A side found at the wrong root or a simulator put into the wrong tet
+    moves it by up to a cell, 1e6 times the tolerance.  So that the check
+    has power, most simulators must have changed cell and most must keep
+    clear of the axis cells.  Printed for comparison: upstream's tracking
+    of the chord (tracking barycentric), which starts each piece after a
+    face from the chord's point, not the path's, and so ends elsewhere.
+    Deterministic."""
+    base = _collisionless("walk", "patch", "patch", WALK_STEPS)
+    with open(os.path.join(base, "constant", "polyMesh", "boundary")) as f:
+        assert "wall" not in f.read(), "the walk's case has walls"
+    i0, x0, c0, U0 = _walk_state(base, "0")
+    T = WALK_STEPS*DT
+
+    errors = {}
+    for tracking in ("barycentric", "cartesian"):
+        case = foam.copy_case(base, f"{base}-{tracking}")
+        foam.set_entry(case, "constant/dsmcProperties", "tracking", tracking)
+        log = foam.run(case, "rarefiedMultiphaseFoam")
+        i1, x1, c1, U1 = _walk_state(case, foam.latest_time(case))
+        kept = np.isin(i0, i1)
+        start = x0[kept]*[1, 1, 0]
+        u = U0[kept]
+        end = start + T*u
+        r = np.hypot(end[:, 1], end[:, 2])
+        c, s = end[:, 1]/r, end[:, 2]/r
+        turned = np.column_stack([u[:, 0], c*u[:, 1] + s*u[:, 2], c*u[:, 2] - s*u[:, 1]])
+        # smallest radius along the line (r^2 quadratic in t)
+        a = u[:, 1]**2 + u[:, 2]**2
+        t = np.clip(-start[:, 1]*u[:, 1]/np.where(a > 0, a, 1), 0, T)
+        clear = np.hypot(start[:, 1] + t*u[:, 1], t*u[:, 2]) > AXIS_ROW
+        dx = np.max(np.hypot(x1[clear, 0] - end[clear, 0], x1[clear, 1] - r[clear]))
+        dU = np.max(np.linalg.norm(U1[clear] - turned[clear], axis=1))
+        errors[tracking] = (dx, dU)
+    with open(log) as f:
+        assert "Gas tracking: Cartesian through 90 of 100 cells" in f.read()
+
+    moved = np.count_nonzero(c1 != c0[kept])
+    dx, dU = errors["cartesian"]
+    ok = moved > len(i1)/2 and clear.sum() > 0.9*len(i1) and dx <= WALK_TOL \
+        and dU <= 1e3*WALK_TOL
+    assert _report(ok, "wedge walk against the analytic path",
+                   f"{len(i0)} simulators, {len(i1)} still in, {moved} in another cell, "
+                   f"{clear.sum()} clear of the axis cells: largest |x - x_exact| "
+                   f"{dx:.3g} m, |U - U_exact| {dU:.3g} m/s (limits {WALK_TOL:g}, "
+                   f"{1e3*WALK_TOL:g}); upstream's tracking of the chord "
+                   f"{errors['barycentric'][0]:.3g} m, {errors['barycentric'][1]:.3g} m/s")
 
 
 def test_not_a_wedge():

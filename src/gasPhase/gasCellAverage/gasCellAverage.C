@@ -93,7 +93,7 @@ void Foam::gasCellAverage::sample(const gasCloud& gas)
         {
             // Radial weight factor: simulators per nParticle molecules
             const scalar f =
-                weighted ? axisymmetric.weightAt(p->position()) : 1;
+                weighted ? axisymmetric.weightAt(gas.position(*p)) : 1;
             const label typei = p->typeId();
             const scalar mi = f*m_[typei];
             count_[typei][celli] += w*f;

@@ -83,6 +83,17 @@ void Foam::gasCloudInputCheck::checkVibration(const dictionary& props)
 }
 
 
+bool Foam::gasCloudInputCheck::cartesianTracking(const dictionary& dict)
+{
+    return
+        inputChecks::getChoiceOrDefault
+        (
+            dict, "tracking", "cartesian", {"cartesian", "barycentric"}
+        )
+     == "cartesian";
+}
+
+
 Foam::wordList Foam::gasCloudInputCheck::checkProperties
 (
     const dictionary& dict
@@ -93,8 +104,7 @@ Foam::wordList Foam::gasCloudInputCheck::checkProperties
     getPositive(dict, "nEquivalentParticles");
     getLabelOrDefault(dict, "randomSeed", 0, 0, 2000);
     getBoolOrDefault(dict, "randomEntryTime", false);
-    // The axisymmetric mode's move is upstream's tracking of a chord
-    boxWalk::selected(dict, getBoolOrDefault(dict, "axisymmetric", false));
+    cartesianTracking(dict);
 
     const wordList species(dict.get<wordList>("typeIdList"));
     if (species.empty())
@@ -687,11 +697,10 @@ void Foam::gasCloud::collide()
             label k = members[i]->octant();
             if (k == gasParcel::noOctant)
             {
-                const vector r
-                (
-                    boxes_->position(*members[i]) - centres[celli]
-                );
-                k = pos0(r.x()) + 2*pos0(r.y()) + 4*pos0(r.z());
+                // (in the axisymmetric mode the quadrant in the plane)
+                const vector r(position(*members[i]) - centres[celli]);
+                k = pos0(r.x()) + 2*pos0(r.y())
+                  + (wedges_ ? 0 : 4*pos0(r.z()));
             }
             octants[k].append(i);
             octantOf[i] = k;
@@ -783,7 +792,7 @@ void Foam::gasCloud::sampleWeighted()
         const label celli = p.cell();
         const auto& props = constProps(p.typeId());
         const scalar w =
-            axisymmetric_.weighted() ? axisymmetric_.weightAt(p.position()) : 1;
+            axisymmetric_.weighted() ? axisymmetric_.weightAt(position(p)) : 1;
         const scalar m = props.mass();
 
         rhoN[celli] += w;
@@ -832,14 +841,25 @@ Foam::gasCloud::gasCloud(const word& cloudName, const fvMesh& mesh)
         )
     ),
     boxes_(nullptr),
+    wedges_(nullptr),
     writeState_(true),
     atCollisionsIndex_(-1)
 {
-    if (boxWalk::selected(particleProperties(), axisymmetric_.active()))
+    if (cartesianTracking(particleProperties()))
     {
-        boxes_ = &boxWalk::New(mesh);
+        label nWalkable = 0;
+        if (axisymmetric_.active())
+        {
+            wedges_ = &wedgeWalk::New(mesh);
+            nWalkable = wedges_->nWalkable();
+        }
+        else
+        {
+            boxes_ = &boxWalk::New(mesh);
+            nWalkable = boxes_->nWalkable();
+        }
         Info<< "Gas tracking: Cartesian through "
-            << returnReduce(boxes_->nWalkable(), sumOp<label>())
+            << returnReduce(nWalkable, sumOp<label>())
             << " of " << returnReduce(mesh.nCells(), sumOp<label>())
             << " cells, barycentric elsewhere" << nl << endl;
     }
@@ -865,6 +885,7 @@ Foam::gasCloud::gasCloud
     account_("Simulators", mesh.boundaryMesh(), 0),
     randomEntryTime_(false),    // the fill moves nothing
     boxes_(nullptr),
+    wedges_(nullptr),
     writeState_(false),
     atCollisionsIndex_(-1)
 {
@@ -901,6 +922,7 @@ bool Foam::gasCloud::weighMove
 (
     gasParcel& p,
     const scalar w0,
+    const scalar w1,
     const bool complete
 )
 {
@@ -909,10 +931,7 @@ bool Foam::gasCloud::weighMove
         return true;
     }
 
-    const label nCopies = axisymmetricMode::copies
-    (
-        w0, axisymmetric_.weightAt(p.position()), rndGen()
-    );
+    const label nCopies = axisymmetricMode::copies(w0, w1, rndGen());
 
     // Clones appended to the cloud being moved: the move loop reaches a
     // clone (or not, if appended while the last member moves) with the
@@ -1041,7 +1060,7 @@ void Foam::gasCloud::evolve()
     // majorant and raise it for the next step when a candidate exceeds it
     const scalarField drawnMax(sigmaTcRMax().primitiveField());
 
-    if (boxes_)
+    if (boxes_ || wedges_)
     {
         evolveCartesian();
     }
@@ -1061,7 +1080,7 @@ void Foam::gasCloud::evolve()
         }
     }
 
-    if (axisymmetric_.weighted() && !boxes_)
+    if (axisymmetric_.weighted() && !boxes_ && !wedges_)
     {
         sampleWeighted();
     }
@@ -1157,7 +1176,7 @@ void Foam::gasCloud::reportStepCriteria(const gasCellAverage& average) const
         for (const gasParcel* p : cellOccupancy()[celli])
         {
             const scalar e =
-                (weighted ? axisymmetric_.weightAt(p->position()) : 1)
+                (weighted ? axisymmetric_.weightAt(position(*p)) : 1)
                *constProps(p->typeId()).mass()*magSqr(p->U());
             all += e;
             if (mag(p->U())*dt > h)
@@ -1257,7 +1276,7 @@ void Foam::gasCloud::info() const
     scalar internalE = 0;
     for (const gasParcel& p : *this)
     {
-        const scalar w = weighted ? axisymmetric_.weightAt(p.position()) : 1;
+        const scalar w = weighted ? axisymmetric_.weightAt(position(p)) : 1;
         const scalar m = w*constProps(p.typeId()).mass();
         weights += w;
         mass += m;

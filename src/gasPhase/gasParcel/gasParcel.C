@@ -33,7 +33,8 @@ Foam::gasParcel::trackingData::trackingData(DSMCCloud<gasParcel>& cloud)
     ),
     randomEntry_(owner_.randomEntryTime()),
     vibrating_(owner_.vibration().active()),
-    boxes_(owner_.boxes())
+    boxes_(owner_.boxes()),
+    wedges_(owner_.wedges())
 {}
 
 
@@ -89,6 +90,47 @@ Foam::scalar Foam::gasParcel::walk
 }
 
 
+Foam::scalar Foam::gasParcel::walkWedge
+(
+    const trackingData& td,
+    const vector& path,
+    const scalar f,
+    point& here
+)
+{
+    const point start(here.x(), here.y(), 0);
+    label celli = this->cell();
+    const scalar t = td.wedges()->walk(start, path, celli);
+    if (t == 0)
+    {
+        return 0;
+    }
+
+    const point end(start + t*path);
+    const point inPlane(end.x(), axisymmetricMode::radius(end), 0);
+    if (!td.wedges()->place(*this, inPlane, celli))
+    {
+        return 0;
+    }
+    here = inPlane;
+
+    if (t < 1)
+    {
+        this->stepFraction() += t*f;
+    }
+    else
+    {
+        // The quadrant of its cell in the plane (the collisions' sub-cell)
+        this->stepFraction() = 1;
+        const point& centre = this->mesh().cellCentres()[celli];
+        octant_ =
+            pos0(inPlane.x() - centre.x()) + 2*pos0(inPlane.y() - centre.y());
+    }
+    axisymmetricMode::turn(U_, end);
+    return t;
+}
+
+
 Foam::scalar Foam::gasParcel::trackingData::vibrationalEnergy
 (
     const gasParcel& p
@@ -125,10 +167,11 @@ bool Foam::gasParcel::trackingData::weighMove
 (
     gasParcel& p,
     const scalar w0,
+    const scalar w1,
     const bool complete
 )
 {
-    return owner_.weighMove(p, w0, complete);
+    return owner_.weighMove(p, w0, w1, complete);
 }
 
 

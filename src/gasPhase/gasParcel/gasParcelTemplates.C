@@ -115,7 +115,9 @@ bool Foam::gasParcel::moveAxisymmetric
         return true;
     }
 
-    const scalar w0 = entered_ ? 1 : td.weightAt(this->position());
+    // Where it is (kept up to date by each piece of the move)
+    point here = td.position(*this);
+    const scalar w0 = entered_ ? 1 : td.weightAt(here);
 
     // Just inserted: by default it entered at a uniformly random time
     // within the step (upstream moves it over the whole step, which leaves
@@ -123,37 +125,64 @@ bool Foam::gasParcel::moveAxisymmetric
     // step's inflow)
     enter(cloud, td);
 
-    // Whether the last track ended on a boundary face without moving: a
-    // simulator reflected at a wall and at once back at it.  A diffuse
-    // wall re-emits it, as at a true second hit an instant later; a second
-    // stall in a row (a specular wall grazed, which would reflect it
-    // there for ever) makes it slide along the wall (axisymmetricMode::
-    // offWall)
-    bool stalled = false;
+    // Pieces in a row that ended on a boundary face without moving (by
+    // less than stallFraction of the rest of the step): a simulator
+    // reflected at a wall and at once back at it.  A diffuse wall re-emits
+    // it, as at a true second hit an instant later; after a stall (a
+    // specular wall grazed, or a fast azimuthal motion along the outer
+    // wall, whose chord leads out through it whichever the sign of v_r,
+    // both of which would reflect it there for ever) it slides along the
+    // wall (axisymmetricMode::offWall).  In a corner of two specular walls
+    // the slide along one stalls at the other, and the two would take
+    // turns for ever: after maxStalls stalls in a row it stays where it
+    // is for the rest of the step
+    static constexpr scalar stallFraction = 1e-9;
+    static constexpr label maxStalls = 4;
+    label nStalled = 0;
 
     while (td.keepParticle && !td.switchProcessor && this->stepFraction() < 1)
     {
-        const scalar f = 1 - this->stepFraction();
+        scalar f = 1 - this->stepFraction();
+
+        // The Cartesian move through the cells that are rectangles in the
+        // plane, as far as they go; upstream's tracking of the chord from
+        // where it stops
+        if (td.wedges() && !nStalled)
+        {
+            if (walkWedge(td, f*trackTime*U_, f, here) == 1)
+            {
+                break;
+            }
+            f = 1 - this->stepFraction();
+        }
 
         // Straight 3-D path over the rest of the step from the simulator's
         // image in the plane z = 0 (it is off the plane only when just
         // placed), and the chord in that plane to where the path ends
-        const point here = this->position();
         const point start(here.x(), here.y(), 0);
         const vector path = f*trackTime*U_;
         vector chord(axisymmetricMode::chord(here, path));
-        if (stalled)
+        if (nStalled)
         {
             chord = axisymmetricMode::offWall(*this, chord);
         }
 
         this->trackToFace(chord, f);
-        stalled = this->stepFraction() == 1 - f && this->onBoundaryFace();
+        nStalled =
+            this->stepFraction() - (1 - f) <= stallFraction*f
+         && this->onBoundaryFace()
+          ? nStalled + 1 : 0;
 
         const scalar done = (this->stepFraction() - (1 - f))/f;
         axisymmetricMode::turn(U_, start + done*path);
 
         this->hitFace(chord, cloud, td);
+        here = td.position(*this);
+
+        if (nStalled == maxStalls)
+        {
+            this->stepFraction() = 1;
+        }
     }
 
     if (!td.keepParticle)
@@ -162,7 +191,8 @@ bool Foam::gasParcel::moveAxisymmetric
         return false;
     }
 
-    td.keepParticle = td.weighMove(*this, w0, !td.switchProcessor);
+    td.keepParticle =
+        td.weighMove(*this, w0, td.weightAt(here), !td.switchProcessor);
 
     return td.keepParticle;
 }
