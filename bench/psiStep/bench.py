@@ -151,9 +151,11 @@ def main():
                f"this {best['this']:.3f} s per step")
     if "previous" in best:
         ratio = best["this"]/best["previous"]
-        verdict = "" if ratio <= TARGET_RATIO else " MISSES TARGET"
         summary += (f", previous {best['previous']:.3f} s; ratio this/previous = "
-                    f"{ratio:.3f} (target <= {TARGET_RATIO}){verdict}")
+                    f"{ratio:.3f}")
+        if args.settings != "crater":   # the gas's target is per simulator-step
+            verdict = "" if ratio <= TARGET_RATIO else " MISSES TARGET"
+            summary += f" (target <= {TARGET_RATIO}){verdict}"
     if all(all(g) for g in gas.values()):
         per = {solver: min(g) for solver, g in gas.items()}
         summary += f"; gas: this {1e6*per['this']:.3f} us per simulator-step"

@@ -735,8 +735,10 @@ void Foam::gasCloud::collide()
             (
                 ntcSelection::accept
                 (
-                    binaryCollision().sigmaTcR(p, q), drawnMax,
-                    majorant[celli], rnd, uncounted
+                    vhs_->active()
+                  ? vhs_->sigmaTcR(p, q)
+                  : binaryCollision().sigmaTcR(p, q),
+                    drawnMax, majorant[celli], rnd, uncounted
                 )
             )
             {
@@ -864,6 +866,7 @@ Foam::gasCloud::gasCloud(const word& cloudName, const fvMesh& mesh)
             << " cells, barycentric elsewhere" << nl << endl;
     }
 
+    vhs_.reset(new vhsCrossSection(*this));
     seedFromCase();
     readState();
     account_.read(mesh, cloudName, mesh.boundaryMesh());

@@ -1,0 +1,55 @@
+/*---------------------------------------------------------------------------*\
+  rarefiedMultiphaseFoam
+  Copyright (C) 2026 The rarefiedMultiphaseFoam authors
+  SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
+\*---------------------------------------------------------------------------*/
+
+#include "vhsCrossSection.H"
+#include "VariableHardSphere.H"
+#include "LarsenBorgnakkeVariableHardSphere.H"
+#include "physicoChemicalConstants.H"
+#include "mathematicalConstants.H"
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::vhsCrossSection::vhsCrossSection(const DSMCCloud<gasParcel>& cloud)
+:
+    nSpecies_(cloud.constProps().size())
+{
+    const BinaryCollisionModel<DSMCCloud<gasParcel>>& model =
+        cloud.binaryCollision();
+    if
+    (
+        !isA<VariableHardSphere<DSMCCloud<gasParcel>>>(model)
+     && !isA<LarsenBorgnakkeVariableHardSphere<DSMCCloud<gasParcel>>>(model)
+    )
+    {
+        return;
+    }
+
+    const scalar Tref = model.coeffDict().getScalar("Tref");
+    const scalar k = constant::physicoChemical::k.value();
+
+    A_.setSize(nSpecies_*nSpecies_);
+    exponent_.setSize(nSpecies_*nSpecies_);
+    for (label p = 0; p < nSpecies_; ++p)
+    {
+        for (label q = 0; q < nSpecies_; ++q)
+        {
+            const auto& P = cloud.constProps(p);
+            const auto& Q = cloud.constProps(q);
+            const scalar d = 0.5*(P.d() + Q.d());
+            const scalar omega = 0.5*(P.omega() + Q.omega());
+            const scalar mR = P.mass()*Q.mass()/(P.mass() + Q.mass());
+
+            A_[p*nSpecies_ + q] =
+                constant::mathematical::pi*d*d
+               *Foam::pow(2*k*Tref/mR, omega - 0.5)
+               /Foam::exp(Foam::lgamma(2.5 - omega));
+            exponent_[p*nSpecies_ + q] = 1 - omega;
+        }
+    }
+}
+
+
+// ************************************************************************* //
