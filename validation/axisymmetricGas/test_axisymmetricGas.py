@@ -38,7 +38,9 @@ wedges and the open one, temperature of the three, 10 radial bins each;
 steps each (|z| < 4.69), and the clone and delete counts of the two
 weighted wedges (|z| < 4.69).  The collision count's 3 % and the logged
 totals' 1e-5 are model and print tolerances, not counted (measured 0.1 %
-and 1 % against 3 %, far beyond their noise).
+and 1 % against 3 %, far beyond their noise).  The walk's end points
+(test_wedge_walk_exact) and the specular wedge (test_specular_wedge) are
+deterministic checks, not counted either.
 """
 
 import math
