@@ -47,7 +47,6 @@ from rmf import foam                                          # noqa: E402
 TUTORIAL = os.path.join(foam.PROJECT_DIR, "tutorials", "psi", "apolloScaledPSI")
 BUILD = os.path.join(foam.PROJECT_DIR, "build", "bench", "loadBalance")
 TARGET = 1.7
-CLOCK = re.compile(r"ClockTime = ([0-9.eE+-]+) s")
 BALANCE = re.compile(r"Load balance since the last write: compute time per processor "
                      r"max/mean = (\S+) \(.*gas (\S+), coupling (\S+), grains (\S+)\)")
 
@@ -79,9 +78,8 @@ def prepare(name, end):
 
 
 def last_clock(log):
-    with open(log) as f:
-        found = CLOCK.findall(f.read())
-    return float(found[-1]) if found else 0.0
+    found = foam.execution_times(log, clock=True)
+    return found[-1] if found else 0.0
 
 
 def run(case, parallel):

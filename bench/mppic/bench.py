@@ -79,7 +79,6 @@ build/bench/mppic/.
 
 import argparse
 import os
-import re
 import shutil
 import sys
 
@@ -332,9 +331,6 @@ def prepare_stock(ours, steps):
     return case, len(positions)
 
 
-_CLOCK = re.compile(r"ExecutionTime = [0-9.eE+-]+ s\s+ClockTime = ([0-9.eE+-]+) s")
-
-
 def parcel_cost(init, label, app, averaging, rep, steps, parcels):
     """CPU seconds per parcel-step of one run, and its clock/CPU ratio."""
     case = foam.copy_case(init, os.path.join(BUILD, f"{label.replace(' ', '-')}-{rep}"))
@@ -349,8 +345,7 @@ def parcel_cost(init, label, app, averaging, rep, steps, parcels):
     if len(counts) < steps or counts[-1][0] != parcels:
         raise RuntimeError(f"{log}: ends with {counts[-1][0] if len(counts) else 0:g} "
                            f"parcels, expected {parcels}")
-    with open(log) as f:
-        clock = [float(x) for x in _CLOCK.findall(f.read())]
+    clock = foam.execution_times(log, clock=True)
     cpu = et[-1] - et[0]
     ratio = (clock[-1] - clock[0])/cpu if len(clock) == steps and cpu > 0 else float("nan")
     return cpu/((steps - 1)*parcels), ratio

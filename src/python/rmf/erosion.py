@@ -50,6 +50,7 @@ import os
 import numpy as np
 
 from rmf import foam
+from rmf.figures import pyplot, save
 
 LX, LZ = 0.010, 0.005       # periodic box of the tutorial [m]
 D = 1e-3                    # grain diameter [m]
@@ -237,9 +238,7 @@ def plot(series, output, title=None):
     """Erosion number, cumulative crossings, averaged fractional collision
     number and the planes against the time since onset, one line per run
     of series {name: series}."""
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    plt = pyplot()
 
     fig, axes = plt.subplots(2, 2, figsize=(11, 7.5), sharex=True)
     (a, b), (c, e) = axes
@@ -278,8 +277,7 @@ def plot(series, output, title=None):
     if title:
         fig.suptitle(title)
     fig.tight_layout()
-    fig.savefig(output, dpi=110)
-    plt.close(fig)
+    save(fig, output)
     print(output)
 
 

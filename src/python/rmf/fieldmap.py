@@ -14,13 +14,12 @@ prints the picture's path.  Cell centres come from OpenFOAM's
 import argparse
 import os
 
-import matplotlib
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import matplotlib.tri as mtri  # noqa: E402
-import numpy as np  # noqa: E402
+import matplotlib.tri as mtri
+import numpy as np
 
-from rmf import foam  # noqa: E402
+from rmf import figures, foam
+
+plt = figures.pyplot()
 
 LABELS = {
     "rhoNMean": "number density [1/m$^3$]",
@@ -65,8 +64,7 @@ def field_map(case, fields, output, time=None):
         axes[0, 0].quiver(C[pick, 0], C[pick, 1], U[pick, 0], U[pick, 1],
                           color="white", alpha=0.7, width=0.002)
     fig.tight_layout()
-    fig.savefig(output, dpi=110)
-    plt.close(fig)
+    figures.save(fig, output)
     return os.path.abspath(output)
 
 

@@ -422,13 +422,20 @@ def step_criteria(text):
     return [tuple(float(v) for v in row) for row in _STEP_CRITERIA.findall(text)]
 
 
-_EXECUTION_TIME = re.compile(r"ExecutionTime = ([0-9.eE+-]+) s")
+_EXECUTION_TIME = re.compile(r"ExecutionTime = ([0-9.eE+-]+) s"
+                             r"(?:\s+ClockTime = ([0-9.eE+-]+) s)?")
 
 
-def execution_times(log):
-    """The CPU time [s] of each 'ExecutionTime = ... s' in a solver log."""
+def execution_times(log, clock=False):
+    """The CPU time [s] of each 'ExecutionTime = ... s' in a solver log
+    (OpenFOAM's time line, and progressReport's); with clock, the
+    'ClockTime = ... s' (wall time) that follows it instead, where one does.
+    The project's one parser of these lines."""
     with open(log) as f:
-        return [float(x) for x in _EXECUTION_TIME.findall(f.read())]
+        found = _EXECUTION_TIME.findall(f.read())
+    if clock:
+        return [float(c) for _, c in found if c]
+    return [float(cpu) for cpu, _ in found]
 
 
 def differing_files(a, b, rel="", equivalent=None):

@@ -21,7 +21,7 @@ import sys
 
 import numpy as np
 
-from rmf import foam
+from rmf import figures, foam
 
 
 def series(case, cloud="grains"):
@@ -41,9 +41,7 @@ def series(case, cloud="grains"):
 
 def plot(curves, output):
     """curves: {label: series}; mean speed and temperature against time."""
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    plt = figures.pyplot()
 
     fig, (ax_u, ax_t) = plt.subplots(1, 2, figsize=(10, 4), constrained_layout=True)
     # Distinct styles: curves that coincide (adaptive in its free-molecular
@@ -63,8 +61,7 @@ def plot(curves, output):
         ax.grid(alpha=0.3)
         ax.legend(title="interphaseCoupling")
     fig.suptitle("Dust cloud in an argon stream (500 m/s, 1000 K): grains per coupling type")
-    fig.savefig(output, dpi=110)
-    plt.close(fig)
+    figures.save(fig, output)
 
 
 def main(argv=None):

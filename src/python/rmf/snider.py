@@ -94,7 +94,7 @@ import sys
 
 import numpy as np
 
-from rmf import foam
+from rmf import figures, foam
 
 CLOUD = "grains"
 TIMES = ("0.1", "0.15", "0.2", "0.6")
@@ -510,9 +510,7 @@ def curves_drawn(png):
 
 def plot(runs, output, times=TIMES, title=None):
     """alpha(z) at each time (one panel per run label)."""
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    plt = figures.pyplot()
 
     fig, axes = plt.subplots(1, len(runs), figsize=(4.2*len(runs), 5),
                              sharey=True, squeeze=False)
@@ -530,16 +528,13 @@ def plot(runs, output, times=TIMES, title=None):
     if title:
         fig.suptitle(title)
     fig.tight_layout()
-    fig.savefig(output, dpi=110)
-    plt.close(fig)
+    figures.save(fig, output)
     print(output)
 
 
 def plot_at(runs, time, output, title=None):
     """alpha(z) of several runs at one time, on one axes."""
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    plt = figures.pyplot()
 
     fig, ax = plt.subplots(figsize=(5.5, 5))
     top = ALPHA_PACKED
@@ -558,8 +553,7 @@ def plot_at(runs, time, output, title=None):
     if title:
         ax.set_title(title)
     fig.tight_layout()
-    fig.savefig(output, dpi=110)
-    plt.close(fig)
+    figures.save(fig, output)
     print(output)
 
 

@@ -19,7 +19,7 @@ import sys
 
 import numpy as np
 
-from rmf import foam, psi
+from rmf import figures, foam, psi
 
 MAX_DOTS = 6000
 
@@ -33,9 +33,7 @@ def main(argv=None):
     case = args.case
     output = args.output or os.path.join(case, "apolloScaledPSI.png")
 
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    plt = figures.pyplot()
     from scipy.interpolate import griddata
 
     settings = psi.read_settings(case)
@@ -91,7 +89,7 @@ def main(argv=None):
                      extend="max")
     fig.suptitle("apolloScaledPSI: water-vapour plume (nozzle in red) and "
                  "regolith parcels (dots; dotted: initial layer top)")
-    fig.savefig(output, dpi=110)
+    figures.save(fig, output)
     print(f"scene: wrote {output} (times {' '.join(pick)})")
 
 

@@ -7,14 +7,9 @@ import os
 
 import numpy as np
 
+from rmf import figures
+
 from .observables import AXIS_BAND, HISTOGRAM_TIMES, nearest_row, series
-
-
-def _plt():
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-    return plt
 
 
 def pick_times(analysis, wanted=None, count=HISTOGRAM_TIMES):
@@ -150,15 +145,14 @@ def plot_timeseries(axes, analysis, label=None, color=None):
 
 def plot_case(analysis, output, wanted=None):
     """The PNGs of one case in output; returns their names."""
-    plt = _plt()
+    plt = figures.pyplot()
     os.makedirs(output, exist_ok=True)
     rows = pick_times(analysis, wanted)
     s = analysis["settings"]
     written = []
 
     def save(fig, name):
-        fig.savefig(os.path.join(output, name), dpi=110)
-        plt.close(fig)
+        figures.save(fig, os.path.join(output, name))
         written.append(name)
 
     fig, ax = plt.subplots(figsize=(7, 4.5), constrained_layout=True)

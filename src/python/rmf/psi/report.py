@@ -7,13 +7,15 @@ import os
 
 import numpy as np
 
+from rmf import figures
+
 from .observables import (ALPHA_VALID, AXIS_BAND, AXIS_FRACTION, DENSITIES,
                           HISTOGRAM_TIMES, JET_QUANTILE, KN_SWITCH, MIN_PARCELS,
                           PEAK_REGION, SHOCK_RISE, SHOCK_SUSTAIN, SIGNIFICANCE,
                           SLAB_PARCELS, SMOOTH_CELLS, STAGNATION_HEIGHT,
                           SURFACE_FRACTION, SURFACE_QUANTILE, analyse, last,
                           nearest_row, series, value)
-from .plots import _plt, plot_case, plot_crater, plot_histogram, plot_knp, plot_timeseries
+from .plots import plot_case, plot_crater, plot_histogram, plot_knp, plot_timeseries
 
 
 # Columns of the per-time table: (header, key, sub-key, scale, format)
@@ -232,7 +234,7 @@ def _with_parcels(analyses, times):
 
 def compare(cases, labels, output, **options):
     """Side-by-side plots and summary of several cases at equal times."""
-    plt = _plt()
+    plt = figures.pyplot()
     os.makedirs(output, exist_ok=True)
     analyses = [analyse(c, **options) for c in cases]
     common, exact = common_times(analyses)
@@ -245,8 +247,7 @@ def compare(cases, labels, output, **options):
     ncol = len(cases)
 
     def save(fig, name):
-        fig.savefig(os.path.join(output, name), dpi=110)
-        plt.close(fig)
+        figures.save(fig, os.path.join(output, name))
         pngs.append(name)
 
     fig, axes = plt.subplots(1, ncol, figsize=(5*ncol, 4.5), squeeze=False,
