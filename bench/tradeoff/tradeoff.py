@@ -42,7 +42,7 @@ dustCloudStream (tutorials/coupling/dustCloudStream)
     mean free path is 3800 grain diameters, so the free-molecular drag and
     heat of a fully accommodating sphere (doc/physics.md 4.2) are the
     physics; integrated by RK4 in the nominal stream from rest at T_0
-    (analytic_grain).  Settings: each interphaseCoupling type
+    (rmf.kinetic.analytic_grain).  Settings: each interphaseCoupling type
     (none, oneWay, twoWayDirect, twoWayIndirect, adaptive, Loth) at the
     tutorial's gas weight and step; oneWay with the gas weight halved,
     doubled and quadrupled, and the step doubled and quintupled.  The
@@ -98,10 +98,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 PROJECT = os.path.dirname(os.path.dirname(HERE))
 sys.path.insert(0, os.path.join(PROJECT, "src", "python"))
 
-from rmf import erosion, foam, grainseries, snider  # noqa: E402
-
-sys.path.insert(0, os.path.join(PROJECT, "validation", "dragLaws"))
-from reference import cd_fm_closed, loth_cd, nusselt, speed_moments  # noqa: E402
+from rmf import erosion, foam, grainseries, kinetic, snider  # noqa: E402
 
 OUT = os.path.join(PROJECT, "build", "bench", "tradeoff")
 TARGET = 0.10               # the error target of the recommendation
@@ -353,8 +350,6 @@ def erosion_box(quick, seeds):
 # Scene: dustCloudStream, the coupling types against the analytic
 # free-molecular drag and heat
 
-K_B = 1.380649e-23
-
 STREAM_SETTINGS = [
     # name, label, interphaseCoupling, gas weight factor, time step factor
     ("oneWay", "one-way, free-molecular (cost base)", "oneWay", 1, 1),
@@ -371,77 +366,6 @@ STREAM_SETTINGS = [
 ]
 
 
-def analytic_grain(gas, grain, t_end, law="freeMolecular", n=2000):
-    """Velocity and temperature of a grain from rest at T0 in a uniform
-    monatomic stream, by RK4 of
-        m_p dv/dt = 1/2 rho (U - v)^2 pi R^2 C_D,   m_p c_p dT_p/dt = Q.
-    law "freeMolecular": C_D(s, T_p/T_g), validation/dragLaws/reference.py's
-    closed form, and
-        Q = pi R^2 n [m/2 E|w|^3 - 2 k T_p E|w|],
-    the free-molecular drag and heat of a fully accommodating, diffusely
-    re-emitting sphere (doc/physics.md 4.2): the molecules that strike the
-    grain bring their kinetic energy in its frame and leave with 2 k T_p
-    each.  law "Loth": reference.py's Loth C_D(Re, Ma, gamma, T_p/T_g) and
-    Nusselt heat Q = Nu pi d kappa (T_g - T_p) (doc/physics.md 4.5; alpha_T
-    1, Eucken's Pr 2/3, kappa = mu c_p,g/Pr), mu the VHS law's at T_g
-    (gas's d, omega, Tref: doc/physics.md 2.3), as the solver's gas dsmc
-    takes it from the cell's averaged temperature."""
-    m, nd, Tg, U = gas["m"], gas["n"], gas["T"], gas["U"]
-    d, rho_p, cp = grain["d"], grain["rho"], grain["cp"]
-    area = math.pi*d*d/4
-    mass = rho_p*math.pi*d**3/6
-    cm = math.sqrt(2*K_B*Tg/m)
-    if law == "Loth":
-        gamma, pr, R = 5/3, 2/3, K_B/m
-        mu = (15*math.sqrt(m*K_B*gas["Tref"]/math.pi)
-              / (2*(5 - 2*gas["omega"])*(7 - 2*gas["omega"])*gas["dRef"]**2)
-              * (Tg/gas["Tref"])**gas["omega"])
-        kappa = mu*gamma*R/((gamma - 1)*pr)
-        kn = mu/(nd*m*d)*math.sqrt(math.pi/(2*R*Tg))
-
-    def rates(y):
-        v, Tp = y
-        u = U - v
-        s = u/cm
-        if law == "Loth":
-            re = nd*m*u*d/mu
-            drag = 0.5*nd*m*u*u*area*loth_cd(re, u/math.sqrt(gamma*R*Tg), gamma, Tp/Tg)
-            heat = nusselt(re, kn, gamma, pr)*math.pi*d*kappa*(Tg - Tp)
-        else:
-            m1, m3 = speed_moments(s)
-            drag = 0.5*nd*m*u*u*area*cd_fm_closed(s, Tp/Tg) if s > 0 else 0.0
-            heat = area*nd*(0.5*m*m3*cm**3 - 2*K_B*Tp*m1*cm)
-        return np.array([drag/mass, heat/(mass*cp)])
-
-    y = np.array([0.0, grain["T0"]])
-    h = t_end/n
-    for _ in range(n):
-        k1 = rates(y)
-        k2 = rates(y + h/2*k1)
-        k3 = rates(y + h/2*k2)
-        k4 = rates(y + h*k3)
-        y = y + h/6*(k1 + 2*k2 + 2*k3 + k4)
-    return float(y[0]), float(y[1])
-
-
-def stream_case_data(case):
-    """The stream's and the grains' properties, read from the case."""
-    def get(d, e):
-        return float(foam.get_entry(case, d, e).strip("()").split()[0])
-    props, grains = "constant/dsmcProperties", "constant/grainsProperties"
-    inlet = "PatchInflowCoeffs/inlet/"
-    gas = {"m": get(props, "moleculeProperties/Ar/mass"), "n": get(props, inlet + "n"),
-           "T": get(props, inlet + "T"), "U": get(props, inlet + "U"),
-           "dRef": get(props, "moleculeProperties/Ar/diameter"),
-           "omega": get(props, "moleculeProperties/Ar/omega"),
-           "Tref": get(props, "VariableHardSphereCoeffs/Tref")}
-    grain = {"d": get("system/grainsInitialiseDict", "regions/cloud/d"),
-             "rho": get(grains, "constantProperties/rho0"),
-             "cp": get(grains, "constantProperties/Cp0"),
-             "T0": get(grains, "constantProperties/T0")}
-    return gas, grain
-
-
 def dust_cloud_stream(quick, seeds):
     steps = 100 if quick else 500
     tutorial = os.path.join(PROJECT, "tutorials", "coupling", "dustCloudStream")
@@ -450,8 +374,8 @@ def dust_cloud_stream(quick, seeds):
     # The reference at the end, the same for every run (the stream and the
     # grains are the tutorial's in every setting)
     t_end = steps*float(foam.get_entry(tutorial, "system/controlDict", "deltaT"))
-    gas, grain = stream_case_data(tutorial)
-    v_ref, T_ref = analytic_grain(gas, grain, t_end)
+    gas, grain = kinetic.stream_case_data(tutorial)
+    v_ref, T_ref = kinetic.analytic_grain(gas, grain, t_end)
     rows = []
     for seed in range(1, seeds + 1):
         for name, label, coupling, weight, step in STREAM_SETTINGS:

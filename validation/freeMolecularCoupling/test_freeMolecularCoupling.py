@@ -33,7 +33,7 @@ the bound is Student's t_9 sigma).
    periodic cell about once a step, which the uniform box does not mind):
    the force along U divided by
    1/2 rho |U|^2 pi R^2 must be the free-molecular sphere C_D(s, T_p/T_g)
-   of doc/physics.md 4.2 (validation/dragLaws/reference.py's closed form, which
+   of doc/physics.md 4.2 (rmf.kinetic's closed form, which
    Test-dragLaws checks against dragLaws::freeMolecularCd) within 2 %
    (the verification set's 2-3 %, doc/physics.md 8, its tighter end); and within t_9 sigma of
    the noise, so a bias well below 2 % is still caught when the noise allows.
@@ -95,17 +95,14 @@ import filecmp
 import math
 import os
 import shutil
-import sys
 
 import numpy as np
 import pytest
 
 from rmf import foam
+from rmf.kinetic import cd_fm_closed
 from rmf_box import FILL, GAS, K, MASS, PROPS, V_CELL, ZETA, copy_box
 from rmf_testing import run_failing, t_limit, z_limit
-
-sys.path.insert(0, os.path.join(foam.PROJECT_DIR, "validation", "dragLaws"))
-from reference import cd_fm_closed  # noqa: E402
 
 BUILD = os.path.join(foam.PROJECT_DIR, "build", "validation", "freeMolecularCoupling")
 
@@ -413,7 +410,7 @@ def test_light_grain_relaxation():
     U_g, T_g and n are the cell's realized values (conserved exactly).
     Tolerance at every write (every 10 steps over 3 tau):
       - the nonlinearity: the closed-form C_D(s) force exceeds the linear
-        one by 0.14 % at s = 0.1 (reference.cd_fm_closed), less as u
+        one by 0.14 % at s = 0.1 (rmf.kinetic.cd_fm_closed), less as u
         decays: 0.2 % of U_g (and O(s^2) frictional heating of B: none,
         B has no slip beyond the fill's ~2 m/s drift noise);
       - plus N_SIGMA (4.65) sigma of the noise: F and Q are sums over N_g simulators of

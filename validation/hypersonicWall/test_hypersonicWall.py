@@ -20,7 +20,7 @@ m^-3), and an incoming molecule crossing the 2 cm meets one of them with
 probability ~5e-4, so the surface sees the free stream's molecules as
 they are.  The loads are then those of a flat plate facing a drifting
 Maxwellian with full accommodation (doc/physics.md 4.2's surface element,
-validation/dragLaws/reference.py's element_coefficients for the pressure):
+rmf.kinetic's element_coefficients for the pressure):
     pressure  p = 1/2 rho U^2 C_p(s, T_w/T),
     heat      q = E_in + N_in (zeta/2) k T - N_in (2 + zeta/2) k T_w,
 with N_in = n c_m/(2 sqrt(pi)) [exp(-s^2) + sqrt(pi) s (1 + erf s)] and
@@ -77,19 +77,17 @@ unequal shares: the beam check takes nearly all of it).
 import math
 import os
 import re
-import sys
 
 import numpy as np
 import pytest
 
 from rmf import foam
+from rmf.kinetic import element_coefficients
 from rmf_testing import report, seed
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 TUTORIAL = os.path.join(foam.PROJECT_DIR, "tutorials", "gas", "impingingStream")
 BUILD = os.path.join(foam.PROJECT_DIR, "build", "validation", "hypersonicWall")
-sys.path.insert(0, os.path.join(foam.PROJECT_DIR, "validation", "dragLaws"))
-from reference import element_coefficients  # noqa: E402
 
 K = 1.380649e-23
 M, ZETA = 46.5e-27, 2                   # N2 as the tutorial

@@ -19,7 +19,7 @@ doc/physics.md 4.5, 4.6), end to end on the solver.
       0.4 % and 0.3 % of 1, so the velocity may differ from the
       exponential by at most ~0.6 %/e ~ 0.25 % of U: tolerance 0.5 % of U.
    b) Both regimes' ODE, integrated independently here (RK4, 50 substeps
-      per solver step) with validation/dragLaws/reference.py's Loth C_D and
+      per solver step) with rmf.kinetic's Loth C_D and
       the Nusselt number written out below from dragLaws.H's formulas:
           dv/dt = (3/4) C_D rho_g |U - v| (U - v)/(rho_p d),
           dT/dt = Nu pi d kappa (T_g - T)/(m_p c_p),  kappa = mu c_p,g/Pr,
@@ -51,11 +51,8 @@ import numpy as np
 import pytest
 
 from rmf import foam
+from rmf.kinetic import loth_cd, loth_cl, nusselt
 from rmf_testing import run_failing
-
-import sys
-sys.path.insert(0, os.path.join(foam.PROJECT_DIR, "validation", "dragLaws"))
-from reference import loth_cd, loth_cl, nusselt  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 BOX = os.path.join(foam.PROJECT_DIR, "validation", "freeMolecularCoupling", "box")
@@ -287,7 +284,7 @@ def test_lift(shear):
     2.35e-5 Pa s): one step from rest at y = 0.2, where v0 = (175, 0, 0),
     |curl U| = |G|, omega* = |G| d/|v0|.  The lift impulse is
     v_y = sign(G) C_L(Re, omega*) (pi d^2/8) rho |v0|^2 dt/m_p (towards the
-    faster gas), C_L from validation/dragLaws/reference.py (independent
+    faster gas), C_L from rmf.kinetic (independent
     of dragLaws); tolerance 1e-6 relative (10 written digits).  v_z stays
     0, and v_x is the drag's alone (the lift is perpendicular)."""
     _, _, d, dt, _, _ = CASES["rarefiedCompressible"]
@@ -430,7 +427,7 @@ def test_loth_from_dsmc():
     periodic cell conserves the gas's mass, momentum and energy exactly,
     so the averaged cell state is the realized one (rho.gas, U.gas,
     T.gas), and the force per grain, couplingForce V, must be Loth's
-    C_D (reference.py) at that state, with mu from the VHS law (Bird
+    C_D (rmf.kinetic) at that state, with mu from the VHS law (Bird
     1994 eq. 4.62, as gasCarrierFields): tolerance 1e-6 (the files' 10
     digits; the grain's velocity change is ~1e-20 of |U|, so freezing C_D
     over a step costs nothing)."""

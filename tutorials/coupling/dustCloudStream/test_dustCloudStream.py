@@ -12,9 +12,9 @@ Checks (physical, each able to fail):
   between writes), and the mean velocity along the stream at 0.1 and
   0.2 ms equals that of a grain from rest at T_0 in the nominal free
   stream (n = 1e21 m^-3 argon, 1000 K, 500 m/s; read from the case), the
-  drag and the heat integrated together by RK4 (bench/tradeoff/
-  tradeoff.py's analytic_grain, whose drag and heat laws are validation/
-  dragLaws/reference.py's, independent of the C++):
+  drag and the heat integrated together by RK4 (rmf.kinetic's
+  analytic_grain, whose drag and heat laws are rmf.kinetic's kinetic-theory
+  references, independent of the C++):
 
       dv/dt = (3/4) C_D rho_g (U - v)^2/(rho_p d),   m_p c_p dT_p/dt = Q,
 
@@ -56,18 +56,15 @@ rmf_testing.seed(1).
 import os
 import re
 import subprocess
-import sys
 
 import numpy as np
 import pytest
 
-from rmf import foam, grainseries
+from rmf import foam, grainseries, kinetic
 from rmf_testing import seed, t_limit
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 BUILD = os.path.join(foam.PROJECT_DIR, "build", "tutorials", "dustCloudStream")
-sys.path.insert(0, os.path.join(foam.PROJECT_DIR, "bench", "tradeoff"))
-import tradeoff  # noqa: E402
 
 with open(os.path.join(HERE, "Allrun-types")) as _f:
     TYPES = re.search(r'^types="([^"]*)"', _f.read(), re.M).group(1).split()
@@ -101,7 +98,7 @@ functions
 
 
 def realized_gas(case, time, gas):
-    """The nominal stream `gas` (tradeoff.stream_case_data) with the
+    """The nominal stream `gas` (kinetic.stream_case_data) with the
     density and stream velocity the grains met up to `time`: the time
     averages of rho.gas and U_x.gas over the cells of the grains' initial
     positions, each cell weighted by its grains."""
@@ -155,12 +152,12 @@ def test_dustCloudStream_reduced(model):
 
     assert np.all(np.diff(ux) > 0) and np.all(np.diff(T) > 0), s
 
-    gas, grain = tradeoff.stream_case_data(case)
+    gas, grain = kinetic.stream_case_data(case)
     law = "Loth" if model == "Loth" else "freeMolecular"
     errors = []
     for name, ti, vi, sd in zip(foam.times(case)[1:], t[1:], ux[1:], SD[law]):
         met = realized_gas(case, name, gas)
-        v_ref, T_ref = tradeoff.analytic_grain(met, grain, ti, law, n=400)
+        v_ref, T_ref = kinetic.analytic_grain(met, grain, ti, law, n=400)
         errors.append((ti, vi, v_ref, vi/v_ref - 1, TOL_T*sd, T_ref))
     ok = all(abs(e) < tol for _, _, _, e, tol, _ in errors)
     print(f"\n{'PASS' if ok else 'FAIL'} dustCloudStream {model}: mean grain U_x against the "
