@@ -89,16 +89,15 @@ resolved.
 import os
 import shutil
 import subprocess
-import sys
 
 import numpy as np
+
+from rmf import foam
+from rmf.bench import OUT, cpu_time, relative_error
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 PROJECT = os.path.dirname(os.path.dirname(HERE))
 TUTORIAL = os.path.join(PROJECT, "tutorials", "psi", "apolloScaledPSI")
-sys.path.insert(0, os.path.join(PROJECT, "src", "python"))
-
-from rmf import foam  # noqa: E402
 
 END_FULL = 6e-5                 # s; the base costs about 80 s of CPU
 END_QUICK = 2e-5                # s; the shock stands by then
@@ -225,9 +224,8 @@ def study(quick, seeds, names=None):
     """Runs the scene's settings (QUICK of them at END_QUICK with --quick,
     all at END_FULL otherwise, or those named; the base and the reference
     over seeds 1..seeds, the others seed 1) and returns the arguments of
-    tradeoff.write_outputs: dict(rows=rows, errors=[...], main_error=...,
+    rmf.bench.write_outputs: dict(rows=rows, errors=[...], main_error=...,
     note=..., judged=(...), cost_label=..., base=...)."""
-    from tradeoff import OUT, cpu_time, relative_error
     end = END_QUICK if quick else END_FULL
     write = WRITE_QUICK if quick else WRITE_FULL
     out = os.path.join(OUT, "apolloPSI")

@@ -3,7 +3,7 @@
 """The apolloPSI scene of the speed-accuracy study (apollo.py): its
 --quick study (apollo.QUICK settings, 20 us of the scaled Apollo PSI
 demo, one seed; 2.5-3 minutes), run as tradeoff.py apolloPSI --quick
-does (apollo.study, then tradeoff.write_outputs).  With ./Alltest --long
+does (apollo.study, then rmf.bench.write_outputs).  With ./Alltest --long
 only: it measures the study (a benchmark, bench/), and the physics it
 checks on the way, the jet's push on the layer and the inflow, the
 default suite checks in test_apolloScaledPSI's reduced runs; at 165 s
@@ -27,28 +27,23 @@ seed 1):
 """
 
 import os
-import sys
 
 import numpy as np
 import pytest
 
+import apollo
+from rmf import bench
 from rmf_testing import report
-
-HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, HERE)
-
-import apollo  # noqa: E402
-import tradeoff  # noqa: E402
 
 
 @pytest.mark.long
 def test_apollo_quick():
     result = apollo.study(True, 1)
-    tradeoff.write_outputs("apolloPSI", **result)
+    bench.write_outputs("apolloPSI", **result)
     rows = {r["setting"]: r for r in result["rows"]}
     ok_all = report("every quick setting ran",
                     sorted(rows) == sorted(apollo.QUICK) and os.path.exists(
-                        os.path.join(tradeoff.OUT, "apolloPSI", "tradeoff.md")),
+                        os.path.join(bench.OUT, "apolloPSI", "tradeoff.md")),
                     f"{len(rows)} of {len(apollo.QUICK)}")
     base = rows["base"]
     standoff = {n: r["standoffValue"] for n, r in rows.items()}

@@ -1,6 +1,6 @@
 # rarefiedMultiphaseFoam. Copyright (C) 2026 The rarefiedMultiphaseFoam authors
 # SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
-"""The speed-accuracy driver (tradeoff.py): its Pareto front and curve
+"""The speed-accuracy driver (tradeoff.py, rmf.bench): its Pareto front and curve
 error against hand-worked cases, and the erosion box's --quick study
 (0.05 s of plume, one seed; about 1.5 minutes; with ./Alltest --long
 only: it measures the study's settings, a benchmark, while the erosion
@@ -75,13 +75,11 @@ import numpy as np
 import pytest
 from scipy import integrate
 
-from rmf import kinetic
+import tradeoff
+from rmf import bench, kinetic
 from rmf_testing import report, t_limit
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, HERE)
-
-import tradeoff  # noqa: E402
 
 
 def test_pareto_front():
@@ -89,7 +87,7 @@ def test_pareto_front():
     # cost with a larger error; f has no error (not placed)
     cost = [1.0, 0.5, 0.1, 0.6, 0.1, 0.05]
     error = [0.0, 0.1, 0.5, 0.2, 0.7, np.nan]
-    front = tradeoff.pareto_front(cost, error)
+    front = bench.pareto_front(cost, error)
     assert report("Pareto front", front == [2, 1, 0], f"{front} (expected [2, 1, 0])")
 
 
@@ -98,7 +96,7 @@ def test_curve_error():
     # sqrt(mean t^2) on a grid of 1001 points = sqrt(1/3) to 1e-3
     t = np.linspace(0, 1, 11)
     grid = np.linspace(0, 1, 1001)
-    e = tradeoff.curve_error(t, 2*t, t, t, grid)
+    e = bench.curve_error(t, 2*t, t, t, grid)
     assert report("curve error", abs(e - np.sqrt(1/3)) < 1e-3,
                   f"{e:.5f} vs sqrt(1/3) = {np.sqrt(1/3):.5f}")
 
