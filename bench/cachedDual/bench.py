@@ -37,9 +37,7 @@ import argparse
 import os
 import sys
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
-                                "..", "..", "src", "python"))
-from rmf import foam, psi  # noqa: E402
+from rmf import foam, psi
 
 BUILD = os.path.join(foam.PROJECT_DIR, "build", "bench", "cachedDual")
 METHODS = ("dual", "cachedDual")

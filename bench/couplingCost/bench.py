@@ -77,10 +77,7 @@ import subprocess
 import sys
 import time
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
-                                "..", "..", "src", "python"))
-
-from rmf import foam  # noqa: E402
+from rmf import foam
 
 # The coupling models timed, in order; extend here
 MODELS = ["none", "oneWay", "twoWayDirect", "twoWayIndirect", "Loth", "adaptive"]

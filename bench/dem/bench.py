@@ -55,9 +55,7 @@ import sys
 
 import numpy as np
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
-                                "..", "..", "src", "python"))
-from rmf import erosion, foam  # noqa: E402
+from rmf import erosion, foam
 
 BOX = os.path.join(foam.PROJECT_DIR, "validation", "demContacts", "box")
 BUILD = os.path.join(foam.PROJECT_DIR, "build", "bench", "dem")

@@ -45,10 +45,7 @@ import subprocess
 import sys
 import time
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
-                                "..", "..", "src", "python"))
-
-from rmf import foam  # noqa: E402
+from rmf import foam
 
 CASES = ("freeSpacePeriodic", "freeSpaceStream", "supersonicCorner", "wedge15Ma5")
 SOLVERS = {"stock": "dsmcFoam", "ours": "rarefiedMultiphaseFoam"}

@@ -40,9 +40,7 @@ import subprocess
 import sys
 import time
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
-                                "..", "..", "src", "python"))
-from rmf import foam                                          # noqa: E402
+from rmf import foam
 
 TUTORIAL = os.path.join(foam.PROJECT_DIR, "tutorials", "psi", "apolloScaledPSI")
 BUILD = os.path.join(foam.PROJECT_DIR, "build", "bench", "loadBalance")

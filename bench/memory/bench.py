@@ -54,10 +54,7 @@ import shutil
 import subprocess
 import sys
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
-                                "..", "..", "src", "python"))
-
-from rmf import foam  # noqa: E402
+from rmf import foam
 
 BUILD = os.path.join(foam.PROJECT_DIR, "build", "bench", "memory")
 PSI = os.path.join(foam.PROJECT_DIR, "tutorials", "psi", "apolloScaledPSI")

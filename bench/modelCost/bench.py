@@ -55,10 +55,7 @@ import resource
 import statistics
 import sys
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
-                                "..", "..", "src", "python"))
-
-from rmf import foam, snider  # noqa: E402
+from rmf import foam, snider
 
 BUILD = os.path.join(foam.PROJECT_DIR, "build", "bench", "modelCost")
 WEDGE = os.path.join(foam.PROJECT_DIR, "validation", "axisymmetricGas", "wedge")

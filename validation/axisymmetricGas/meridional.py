@@ -12,7 +12,7 @@ written time of the fieldAverage means, uniformity.batches): number density
 (molecules over bin volume), mean velocity (x, radial) from the momentum,
 each cell's momentum turned into its own meridional plane first, and
 translational temperature (mean kinetic energy less that of the mean
-velocity).  Noise: batch means, uniformity.batch_deviation.
+velocity).  Noise: batch means, rmf.stats.batch_deviation.
 """
 
 import os
@@ -21,6 +21,7 @@ import numpy as np
 from scipy import stats
 
 from rmf import foam
+from rmf.stats import batch_deviation
 
 import uniformity as uf
 
@@ -78,8 +79,8 @@ def compare(a, b, fields=FIELDS):
     degrees of freedom (Welch-Satterthwaite), per bin."""
     result = {}
     for name in fields:
-        mean_a, se_a, _ = uf.batch_deviation(a[name], 0)
-        mean_b, se_b, _ = uf.batch_deviation(b[name], 0)
+        mean_a, se_a, _ = batch_deviation(a[name], 0)
+        mean_b, se_b, _ = batch_deviation(b[name], 0)
         se = np.hypot(se_a, se_b)
         dof = se ** 4 / (se_a ** 4 / (len(a[name]) - 1) + se_b ** 4 / (len(b[name]) - 1))
         result[name] = (mean_a, mean_b, se, (mean_a - mean_b) / se, dof)

@@ -19,7 +19,7 @@ method: a batch is longer than an acoustic crossing of the radius, about
 bins, is 0.01-0.05 in the closed wedges, 0.22 (density) and 0.17 (T) in
 the open one, whose content relaxes to the free stream's over some 80
 steps (its simulators over their outflow): the standard errors are
-corrected for it (uniformity.corrected_deviation: AR(1), factor sqrt((1 + rho)/(1 - rho))
+corrected for it (rmf.stats.corrected_deviation: AR(1), factor sqrt((1 + rho)/(1 - rho))
 when rho > 0).  A bin fails beyond MAX_DEV standard errors (Student's t,
 17 d.o.f., Bonferroni share of the module's error), or when its standard
 error exceeds 2 % (measured: 0.2-0.8 % for the density, up to 1.8 K for
@@ -51,6 +51,7 @@ import numpy as np
 import pytest
 
 from rmf import foam
+from rmf.stats import corrected_deviation
 from rmf_testing import run_failing, seed, t_limit, z_limit
 
 import uniformity as uf
@@ -125,7 +126,7 @@ def test_uniform_density(runs, name):
     radii, row_vol, dens, _ = uf.radial_batches(runs[name], SKIP)
     overall = (dens * row_vol).sum(axis=1) / row_vol.sum()
     ratio = dens / overall[:, None]
-    mean, se, dev, rho = uf.corrected_deviation(ratio, 1)
+    mean, se, dev, rho = corrected_deviation(ratio, 1)
     figures = (f"n/n_wedge by radius {np.round(mean, 4).tolist()}, lag-1 {rho:+.2f}, "
                f"max |dev| {abs(dev).max():.2f} se (limit {MAX_DEV:.2f}), "
                f"se {se.min():.4f}-{se.max():.4f} (limit {MAX_SE})")
@@ -137,7 +138,7 @@ def test_free_stream_density(runs):
     """Open outer radius (free stream at N0): each bin at N0 within noise;
     without the inflow's 1/RWF the outer bins would hold up to 10 N0."""
     _, _, dens, _ = uf.radial_batches(runs["openWeighted"], SKIP)
-    mean, se, dev, rho = uf.corrected_deviation(dens, N0)
+    mean, se, dev, rho = corrected_deviation(dens, N0)
     figures = (f"n/N0 by radius {np.round(mean / N0, 4).tolist()}, lag-1 {rho:+.2f}, "
                f"max |dev| {abs(dev).max():.2f} se (limit {MAX_DEV:.2f}), "
                f"relative se up to {(se / N0).max():.4f} (limit {MAX_SE})")
@@ -149,7 +150,7 @@ def test_free_stream_density(runs):
 def test_temperature(runs, name):
     """Translational temperature of each bin at the walls' 300 K within noise."""
     _, _, _, temp = uf.radial_batches(runs[name], SKIP)
-    mean, se, dev, rho = uf.corrected_deviation(temp, T0)
+    mean, se, dev, rho = corrected_deviation(temp, T0)
     figures = (f"T by radius {np.round(mean, 1).tolist()} K, lag-1 {rho:+.2f}, "
                f"max |dev| {abs(dev).max():.2f} se (limit {MAX_DEV:.2f}), "
                f"se up to {se.max():.2f} K (limit {MAX_SE * T0:.0f} K)")

@@ -103,28 +103,6 @@ def vhs_sigma_cr(mass, diameter, omega, t_ref, temperature):
     return val
 
 
-def batch_deviation(samples, expected):
-    """Per bin, over the batches (rows) of samples: the mean, its standard
-    error (batch spread / sqrt(batches)) and the deviation of the mean
-    from expected in standard errors."""
-    mean = samples.mean(axis=0)
-    se = samples.std(axis=0, ddof=1)/np.sqrt(len(samples))
-    return mean, se, (mean - expected)/se
-
-
-def corrected_deviation(samples, expected):
-    """batch_deviation with the standard error corrected for correlated
-    batches: an AR(1) correlation rho, the median over the bins of the
-    batch means' lag-1 autocorrelation, when positive, inflates the
-    variance of the mean by (1 + rho)/(1 - rho).  Returns mean, se, dev and
-    rho."""
-    mean, se, _ = batch_deviation(samples, expected)
-    x = samples - mean
-    rho = float(np.median((x[1:] * x[:-1]).sum(axis=0) / (x * x).sum(axis=0)))
-    se = se * math.sqrt((1 + max(rho, 0)) / (1 - max(rho, 0)))
-    return mean, se, (mean - expected) / se, rho
-
-
 def weighting_events(max_weight, extent, radius, dt, temperature, mass,
                      open_outer=False, samples=1000000, rng_seed=1):
     """Expected radial-weighting events (clones + deletions) per step of an

@@ -21,7 +21,7 @@ turned back into the meridional plane, and are weighted radially.
    give each row's standard error; they are not quite independent (lag-1
    autocorrelation 0.19-0.26, median over the rows), which would make the
    plain standard error too small: it is corrected for an AR(1)
-   correlation (uniformity.corrected_deviation of validation/
+   correlation (rmf.stats.corrected_deviation, as validation/
    axisymmetricGas, factor sqrt((1 + rho)/(1 - rho))).  A row fails
    beyond MAX_DEV standard errors (t, 38 d.o.f., Bonferroni share of the
    module's error: 5.23) or when its standard error exceeds 4 % (the
@@ -103,19 +103,17 @@ against standard errors of 0.06-0.15 %) and the parcel count's 10 %.
 
 import math
 import os
-import sys
 
 import numpy as np
 import pytest
 
 from rmf import foam
+from rmf.stats import corrected_deviation
 from rmf_testing import seed, t_limit, z_limit
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 WEDGE = os.path.join(HERE, "wedge")
 GAS_WEDGE = os.path.join(HERE, "..", "axisymmetricGas", "wedge")
-sys.path.insert(0, os.path.join(HERE, "..", "axisymmetricGas"))
-import uniformity as uf                                     # noqa: E402
 BUILD = os.path.join(foam.PROJECT_DIR, "build", "validation", "axisymmetricGrains")
 
 K_B = 1.380649e-23
@@ -287,7 +285,7 @@ def test_uniform_alpha(uniform, name):
         alpha = foam.read_field(os.path.join(case, t, "alpha.grains"))
         profile = np.bincount(rows, alpha * vol) / row_vol
         ratios.append(profile / ((alpha * vol).sum() / vol.sum()))
-    mean, se, dev, rho = uf.corrected_deviation(np.array(ratios), 1)
+    mean, se, dev, rho = corrected_deviation(np.array(ratios), 1)
     figures = (f"{len(ratios)} snapshots, alpha/alpha_wedge by radius "
                f"{np.round(mean, 3).tolist()}, lag-1 {rho:+.2f}, max |dev| {abs(dev).max():.2f} "
                f"se (limit {MAX_DEV:.2f}), se {se.min():.4f}-{se.max():.4f} (limit {MAX_SE})")

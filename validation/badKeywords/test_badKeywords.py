@@ -7,7 +7,7 @@ The list.  Both programs take -listKeywords: they read and check a case's
 set-up as a run does and print one row per keyword their checks read
 (inputChecks::keywordRecord: dictionary and scope, keyword, kind,
 required or optional, valid range or choices).  The rows of every model
-family's case (those of validation/exactRestart, and the regolith erosion
+family's case (testing/rmf_families.py's, and the regolith erosion
 box for the prescribed gas, Cartesian contacts, erosion planes and
 tabulated profiles) are gathered; the test holds no keyword list of its
 own, so a keyword the code checks is a keyword the test tries.  The rows
@@ -54,19 +54,17 @@ import random
 import re
 import shutil
 import subprocess
-import sys
 import tempfile
 
 import pytest
 
+import rmf_families as families
 from rmf import foam
 from rmf_testing import report, set_in_list
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = foam.PROJECT_DIR
 BUILD = os.path.join(ROOT, "build", "validation", "badKeywords")
-sys.path.insert(0, os.path.join(ROOT, "validation", "exactRestart"))
-import test_exactRestart as families                        # noqa: E402
 
 EROSION_BOX = os.path.join(ROOT, "tutorials", "psi", "regolithErosionBox")
 SOLVER = "rarefiedMultiphaseFoam"

@@ -86,6 +86,7 @@ import pytest
 
 import rmf_testing
 from rmf import foam
+from rmf.dem import D, KN, L, MASS, R, contact_time, write_grains, zeta
 from rmf_testing import report
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -104,24 +105,6 @@ Z = rmf_testing.z_limit(STATISTICAL)
 CONTACTS = ["pair", "cartesian"]
 PER_STEP = {"pair": 1, "cartesian": 10}
 
-D = 1e-3                    # grain diameter [m]
-R = D/2
-RHO = 2700.0                # [kg/m^3]
-MASS = RHO*math.pi*D**3/6   # one grain [kg]
-KN = 8000.0                 # [N/m]
-L = 0.01                    # box side [m]
-
-
-def zeta(e):
-    lne = math.log(e)
-    return -lne/math.sqrt(math.pi**2 + lne**2)
-
-
-def contact_time(e, m_eff, k=KN):
-    w = math.sqrt(k/m_eff)
-    return math.pi/(w*math.sqrt(1 - zeta(e)**2))
-
-
 def attractive_fraction(e):
     """a: the impulse of the pulling part of the normal force over
     m v_n, from the closed-form damped overlap (see 2.)."""
@@ -132,26 +115,6 @@ def attractive_fraction(e):
     v = np.exp(-z*t)*(np.cos(wd*t) - z/wd*np.sin(wd*t))
     force = x + 2*z*v
     return float(-np.trapz(np.minimum(force, 0), t))
-
-
-def write_grains(case, groups, seed=1):
-    """groups: name -> (positions (n, 3), U0, sigmaU)."""
-    regions = []
-    for name, (xs, U0, sigmaU) in groups.items():
-        with open(os.path.join(case, "constant", name + "Positions"), "w") as f:
-            f.write("FoamFile { version 2.0; format ascii; class vectorField;"
-                    f" object {name}Positions; }}\n{len(xs)}\n(\n")
-            for x in xs:
-                f.write(f"({x[0]:.17g} {x[1]:.17g} {x[2]:.17g})\n")
-            f.write(")\n")
-        regions.append(
-            f"    {name} {{ type positionsFile; file {name}Positions;"
-            f" nParticle 1; d {D}; U0 ({U0[0]:.17g} {U0[1]:.17g} {U0[2]:.17g});"
-            f" sigmaU {sigmaU}; }}\n")
-    with open(os.path.join(case, "system", "grainsInitialiseDict"), "w") as f:
-        f.write("FoamFile { version 2.0; format ascii; class dictionary;"
-                " object grainsInitialiseDict; }\n"
-                f"randomSeed {seed};\nregions\n{{\n" + "".join(regions) + "}\n")
 
 
 FACES = {"x": ("(0 4 7 3)", "(1 2 6 5)"), "y": ("(0 1 5 4)", "(3 7 6 2)"),

@@ -57,12 +57,9 @@ from concurrent.futures import ThreadPoolExecutor
 
 import numpy as np
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(HERE, "..", "..", "src", "python"))
-sys.path.insert(0, os.path.join(HERE, "..", "..", "testing"))
+import rmf_testing
+from rmf import foam, stats
 
-import rmf_testing  # noqa: E402
-from rmf import foam, stats  # noqa: E402
 
 CASES = ("freeSpacePeriodic", "freeSpaceStream", "supersonicCorner", "wedge15Ma5")
 

@@ -2,7 +2,7 @@
 # SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
 """Faults while writing (issue 18 item 2; doc/physics.md 1.4, "Faults").
 
-The gas case of test_exactRestart (dsmcFoam's freeSpacePeriodic, own
+The gas family of testing/rmf_families.py (dsmcFoam's freeSpacePeriodic, own
 stream, writeFormat binary, about 40 000 simulators) is run to N steps;
 then a second run to 2N steps is broken while it writes time 2N:
 - killed: the run kills itself with SIGKILL in the middle of writing 2N,
@@ -32,9 +32,8 @@ import subprocess
 
 import pytest
 
+import rmf_families as families
 from rmf import foam
-
-import test_exactRestart as exact
 
 BUILD = os.path.join(foam.PROJECT_DIR, "build", "validation", "restartFaults")
 CONTROL = "system/controlDict"
@@ -45,7 +44,7 @@ LIMIT = 200_000     # [bytes] RLIMIT_FSIZE: above every field, below a simulator
 @pytest.fixture(scope="module")
 def cases():
     """(base run to N, the uninterrupted run to 2N, dt)."""
-    base = exact.gas(os.path.join(BUILD, "base"), 1)
+    base = families.gas(os.path.join(BUILD, "base"), 1)
     dt = float(foam.get_entry(base, CONTROL, "deltaT"))
     foam.set_entry(base, CONTROL, "startFrom", "latestTime")
     foam.set_entry(base, CONTROL, "writeControl", "timeStep")

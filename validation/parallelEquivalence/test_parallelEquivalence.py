@@ -3,7 +3,7 @@
 """Serial against 2 ranks, statistically, for every model family and every
 decomposition method (issue 18 item 3).
 
-The families are exact restart's (validation/exactRestart): gas alone;
+The families are exact restart's (testing/rmf_families.py): gas alone;
 grains with MPPIC, hybrid MPPIC/NTC, NTC hard spheres and DEM; the
 dustCloudStream gas and grains with each interphaseCoupling type; the
 radially weighted axisymmetric gas and grains with twoWayDirect.  Per
@@ -55,18 +55,16 @@ range.  12 seeds estimate the spread better.
 
 import os
 import re
-import sys
 
 import numpy as np
 import pytest
 
+import rmf_families as families
 import rmf_testing
 from rmf import foam
 
 ROOT = foam.PROJECT_DIR
 BUILD = os.path.join(ROOT, "build", "validation", "parallelEquivalence")
-sys.path.insert(0, os.path.join(ROOT, "validation", "exactRestart"))
-import test_exactRestart as families  # noqa: E402
 
 K = 12
 METHODS = ("scotch", "simple", "hierarchical")

@@ -17,16 +17,11 @@ doc/physics.md with margins set against measured realisations
 (rmf.snider, and the constants below), not limits of a noise model; the
 seeds of every run go through rmf_testing.seed (validate.py)."""
 
-import os
-import sys
-
 import pytest
 
-sys.path.insert(0, os.path.dirname(__file__))
-
-import validate  # noqa: E402
-from rmf import snider  # noqa: E402
-from rmf_testing import t_limit  # noqa: E402
+import validate
+from rmf import snider
+from rmf_testing import t_limit
 
 # Comparisons against noise in the module (docstring)
 COMPARISONS = 3

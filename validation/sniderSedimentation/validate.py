@@ -54,9 +54,7 @@ import os
 import sys
 
 from rmf import foam, snider
-
-sys.path.insert(0, os.path.join(foam.PROJECT_DIR, "testing"))
-from rmf_testing import seed  # noqa: E402
+from rmf_testing import seed
 
 TUTORIAL = os.path.join(foam.PROJECT_DIR, "tutorials", "solids", "sniderSedimentation")
 BUILD = os.path.join(foam.PROJECT_DIR, "build", "validation", "sniderSedimentation")

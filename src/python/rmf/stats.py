@@ -31,8 +31,13 @@ divided by its number of checks (Bonferroni), which compare() cannot know.
 A Student quantile assumes normal statistics; at the small alpha of a
 Bonferroni share it is large for a small ensemble (K = 6: 28.5 at 1e-6),
 so K sets the power.
+
+batch_deviation and corrected_deviation: the batch-means standard error of
+binned time averages within one run (each written time one batch), for
+validation/axisymmetricGas and validation/axisymmetricGrains.
 """
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -105,3 +110,25 @@ def compare(name, y, ensemble, alpha):
     checks.append(Check(f"{name} pattern", pattern_y, pattern.mean(),
                         pattern.mean() + t1*pattern.std(ddof=1)*grow, False))
     return checks
+
+
+def batch_deviation(samples, expected):
+    """Per bin, over the batches (rows) of samples: the mean, its standard
+    error (batch spread / sqrt(batches)) and the deviation of the mean
+    from expected in standard errors."""
+    mean = samples.mean(axis=0)
+    se = samples.std(axis=0, ddof=1)/np.sqrt(len(samples))
+    return mean, se, (mean - expected)/se
+
+
+def corrected_deviation(samples, expected):
+    """batch_deviation with the standard error corrected for correlated
+    batches: an AR(1) correlation rho, the median over the bins of the
+    batch means' lag-1 autocorrelation, when positive, inflates the
+    variance of the mean by (1 + rho)/(1 - rho).  Returns mean, se, dev and
+    rho."""
+    mean, se, _ = batch_deviation(samples, expected)
+    x = samples - mean
+    rho = float(np.median((x[1:] * x[:-1]).sum(axis=0) / (x * x).sum(axis=0)))
+    se = se * math.sqrt((1 + max(rho, 0)) / (1 - max(rho, 0)))
+    return mean, se, (mean - expected) / se, rho

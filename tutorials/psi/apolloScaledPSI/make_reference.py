@@ -27,11 +27,7 @@ import os
 import sys
 from concurrent.futures import ThreadPoolExecutor
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(HERE, "..", "..", "..", "testing"))
-sys.path.insert(0, os.path.join(HERE, "..", "..", "..", "src", "python"))
-
-import test_apolloScaledPSI as t  # noqa: E402
+import test_apolloScaledPSI as t
 
 
 def main():
