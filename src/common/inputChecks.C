@@ -114,34 +114,6 @@ const token& singleToken
 }
 
 
-//- Closed or open interval text
-std::string intervalText
-(
-    const scalar min,
-    const scalar max,
-    const bool openMin,
-    const bool openMax,
-    const std::string& maxText = ""
-)
-{
-    const auto bound = [](const scalar x) -> std::string
-    {
-        if (x >= VGREAT)
-        {
-            return "inf";
-        }
-        if (x <= -VGREAT)
-        {
-            return "-inf";
-        }
-        return Foam::name(x);
-    };
-
-    return std::string(openMin ? "(" : "[") + bound(min) + ", "
-      + (maxText.empty() ? bound(max) : maxText) + (openMax ? ")" : "]");
-}
-
-
 //- Read keyword as a word of choices, or as any name when what (its
 //  description) is given
 word getWordChecked
@@ -320,24 +292,54 @@ void Foam::inputChecks::keywordRecord::print(const fileName& casePath)
 
 // * * * * * * * * * * * * * * * * Functions * * * * * * * * * * * * * * * * //
 
-Foam::scalar Foam::inputChecks::getInterval
+bool Foam::inputChecks::interval::contains(const scalar value) const
+{
+    return
+        std::isfinite(value)
+     && (openMin ? value > min : value >= min)
+     && (openMax ? value < max : value <= max);
+}
+
+
+std::string Foam::inputChecks::interval::text() const
+{
+    const auto end = [](const scalar x) -> std::string
+    {
+        if (x >= VGREAT)
+        {
+            return "inf";
+        }
+        if (x <= -VGREAT)
+        {
+            return "-inf";
+        }
+        return Foam::name(x);
+    };
+
+    return std::string(openMin ? "(" : "[") + end(min) + ", "
+      + (maxText.empty() ? end(max) : maxText) + (openMax ? ")" : "]");
+}
+
+
+namespace Foam
+{
+namespace inputChecks
+{
+namespace
+{
+
+//- getInterval and getIntervalOrDefault
+scalar readInterval
 (
     const dictionary& dict,
     const word& keyword,
-    const scalar min,
-    const scalar max,
-    const bool openMin,
-    const bool openMax,
+    const interval& valid,
     const bool required,
-    const scalar deflt,
-    const std::string& maxText
+    const scalar deflt
 )
 {
-    const std::string valid
-    (
-        intervalText(min, max, openMin, openMax, maxText)
-    );
-    const entry* e = findChecked(dict, keyword, "scalar", valid, required);
+    const std::string text(valid.text());
+    const entry* e = findChecked(dict, keyword, "scalar", text, required);
 
     if (!e)
     {
@@ -346,22 +348,43 @@ Foam::scalar Foam::inputChecks::getInterval
 
     const ITstream& is = e->stream();
     const token& t =
-        singleToken(dict, *e, valid, is.size() == 1 && is[0].isNumber());
+        singleToken(dict, *e, text, is.size() == 1 && is[0].isNumber());
     const scalar value = t.number();
 
-    const bool inside =
-        std::isfinite(value)
-     && (openMin ? value > min : value >= min)
-     && (openMax ? value < max : value <= max);
-
-    if (!inside)
+    if (!valid.contains(value))
     {
-        outOfRange(dict, keyword, value, valid);
+        outOfRange(dict, keyword, value, text);
     }
 
     return value;
 }
 
+} // End anonymous namespace
+} // End namespace inputChecks
+} // End namespace Foam
+
+
+Foam::scalar Foam::inputChecks::getInterval
+(
+    const dictionary& dict,
+    const word& keyword,
+    const interval& valid
+)
+{
+    return readInterval(dict, keyword, valid, true, 0);
+}
+
+
+Foam::scalar Foam::inputChecks::getIntervalOrDefault
+(
+    const dictionary& dict,
+    const word& keyword,
+    const interval& valid,
+    const scalar deflt
+)
+{
+    return readInterval(dict, keyword, valid, false, deflt);
+}
 
 
 void Foam::inputChecks::notOneOf
@@ -382,7 +405,7 @@ Foam::scalar Foam::inputChecks::getPositive
     const word& keyword
 )
 {
-    return getInterval(dict, keyword, 0, VGREAT, true, true, true, 0);
+    return getInterval(dict, keyword, interval::open(0, VGREAT));
 }
 
 
@@ -393,7 +416,7 @@ Foam::scalar Foam::inputChecks::getPositiveOrDefault
     const scalar deflt
 )
 {
-    return getInterval(dict, keyword, 0, VGREAT, true, true, false, deflt);
+    return getIntervalOrDefault(dict, keyword, interval::open(0, VGREAT), deflt);
 }
 
 
@@ -403,7 +426,7 @@ Foam::scalar Foam::inputChecks::getNonNegative
     const word& keyword
 )
 {
-    return getInterval(dict, keyword, 0, VGREAT, false, true, true, 0);
+    return getInterval(dict, keyword, interval::atLeast(0));
 }
 
 
@@ -414,7 +437,7 @@ Foam::scalar Foam::inputChecks::getNonNegativeOrDefault
     const scalar deflt
 )
 {
-    return getInterval(dict, keyword, 0, VGREAT, false, true, false, deflt);
+    return getIntervalOrDefault(dict, keyword, interval::atLeast(0), deflt);
 }
 
 
@@ -426,7 +449,7 @@ Foam::scalar Foam::inputChecks::getClosed
     const scalar max
 )
 {
-    return getInterval(dict, keyword, min, max, false, false, true, 0);
+    return getInterval(dict, keyword, interval::closed(min, max));
 }
 
 
@@ -439,7 +462,7 @@ Foam::scalar Foam::inputChecks::getClosedOrDefault
     const scalar max
 )
 {
-    return getInterval(dict, keyword, min, max, false, false, false, deflt);
+    return getIntervalOrDefault(dict, keyword, interval::closed(min, max), deflt);
 }
 
 
@@ -452,7 +475,7 @@ Foam::scalar Foam::inputChecks::getOpen
     const std::string& maxText
 )
 {
-    return getInterval(dict, keyword, min, max, true, true, true, 0, maxText);
+    return getInterval(dict, keyword, interval::open(min, max, maxText));
 }
 
 
@@ -464,7 +487,7 @@ Foam::scalar Foam::inputChecks::getAtLeast
     const scalar deflt
 )
 {
-    return getInterval(dict, keyword, min, VGREAT, false, true, false, deflt);
+    return getIntervalOrDefault(dict, keyword, interval::atLeast(min), deflt);
 }
 
 

@@ -20,7 +20,8 @@ void Foam::prescribedGas::readConstants(const dictionary& dict)
     // 5/3 as written with 6 digits (1.66667) is accepted
     g.gamma = inputChecks::getInterval
     (
-        dict, "gamma", 1, 5.0/3.0*(1 + 1e-5), true, false, true, 0, "5/3"
+        dict, "gamma",
+        inputChecks::interval::above(1, 5.0/3.0*(1 + 1e-5), "5/3")
     );
     g.R = inputChecks::getPositive(dict, "R");
     g.Pr = inputChecks::getPositiveOrDefault

@@ -165,9 +165,9 @@ Foam::phaseBalancedDecomp::phaseBalancedDecomp
             "a list of one or more volScalarField names"
         );
     }
-    imbalance_ = inputChecks::getInterval
+    imbalance_ = inputChecks::getIntervalOrDefault
     (
-        coeffs, "imbalance", 1, VGREAT, true, true, false, 1.03
+        coeffs, "imbalance", inputChecks::interval::open(1, VGREAT), 1.03
     );
 }
 

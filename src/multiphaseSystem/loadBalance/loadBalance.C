@@ -82,17 +82,17 @@ Foam::loadBalance::loadBalance(const fvMesh& mesh)
     mesh_(mesh),
     maxImbalance_
     (
-        inputChecks::getInterval
+        inputChecks::getIntervalOrDefault
         (
-            settings(mesh), "maxImbalance", 1, VGREAT, true, true, false,
-            VGREAT
+            settings(mesh), "maxImbalance",
+            inputChecks::interval::open(1, VGREAT), VGREAT
         )
     ),
     candidateCost_
     (
-        inputChecks::getInterval
+        inputChecks::getIntervalOrDefault
         (
-            settings(mesh), "candidateCost", 0, VGREAT, false, true, false,
+            settings(mesh), "candidateCost", inputChecks::interval::atLeast(0),
             0.2
         )
     ),

@@ -115,9 +115,9 @@ void Foam::regionFill::count
     scalar alpha0 = 0;
     if (hasAlpha)
     {
-        alpha0 = getInterval
+        alpha0 = getIntervalOrDefault
         (
-            dict_, "alpha0", 0, alphaMax, true, true, false, 0, alphaMaxWhat
+            dict_, "alpha0", interval::open(0, alphaMax, alphaMaxWhat), 0
         );
     }
 

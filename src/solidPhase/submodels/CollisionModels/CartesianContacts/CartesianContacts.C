@@ -482,9 +482,10 @@ Foam::CartesianContacts<CloudType>::CartesianContacts
     ),
     skin_
     (
-        inputChecks::getInterval
+        inputChecks::getIntervalOrDefault
         (
-            this->coeffDict(), "neighbourSkin", 0, 1, true, false, false, 0.2
+            this->coeffDict(), "neighbourSkin",
+            inputChecks::interval::above(0, 1), 0.2
         )
     ),
     gravity_(false),

@@ -35,9 +35,9 @@ void Foam::PackingModels::TwoSided<CloudType>::checkCoeffs
     );
     inputChecks::getClosed(coeffs, "e", 0, 1);
 
-    inputChecks::getInterval
+    inputChecks::getIntervalOrDefault
     (
-        coeffs, "alphaMin", 0, 1, true, true, false, 1e-4
+        coeffs, "alphaMin", inputChecks::interval::open(0, 1), 1e-4
     );
     inputChecks::getClosedOrDefault(coeffs, "relief", 0, 0, 1);
     inputChecks::getClosedOrDefault(coeffs, "smoothing", 0, 0, 1);

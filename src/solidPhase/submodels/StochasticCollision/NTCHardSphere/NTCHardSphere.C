@@ -30,9 +30,9 @@ inline scalar getFraction
     const scalar deflt
 )
 {
-    return inputChecks::getInterval
+    return inputChecks::getIntervalOrDefault
     (
-        dict, keyword, 0, 1, true, false, false, deflt
+        dict, keyword, inputChecks::interval::above(0, 1), deflt
     );
 }
 
