@@ -12,6 +12,7 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "gasCloud.H"
+#include "gasModelChecks.H"
 
 #include "NoBinaryCollision.H"
 #include "VariableHardSphere.H"
@@ -45,6 +46,12 @@ namespace Foam
     (
         LarsenBorgnakkeVariableSoftSphere,
         gasCloudBase
+    );
+
+    // The collision model that exchanges vibrational energy
+    static const gasModelChecks::addVibrating addVibratingLBVSS
+    (
+        LarsenBorgnakkeVariableSoftSphere<gasCloudBase>::typeName_()
     );
 
     makeWallInteractionModel(gasCloudBase);

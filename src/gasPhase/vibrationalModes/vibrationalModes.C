@@ -82,7 +82,7 @@ Foam::vibrationalModes::vibrationalModes
     phi_(species.size()),
     maxOscillators_(0)
 {
-    // (values checked by gasCloud::checkProperties)
+    // (values checked by gasCloudInputCheck)
     forAll(species, p)
     {
         const dictionary& props = moleculeProperties.subDict(species[p]);

@@ -8,42 +8,86 @@
 #include "physicoChemicalConstants.H"
 #include "mathematicalConstants.H"
 #include "normalTo.H"
+#include "inputChecks.H"
+#include "keywordChecks.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+template<class CloudType>
+Foam::scalar Foam::VariableSoftSphere<CloudType>::readInverseZ
+(
+    const bool exchange
+) const
+{
+    const dictionary& coeffs = this->coeffDict();
+    wordList valid({"Tref", "alpha", "alphaPairs"});
+    scalar inverseZ = 0;
+    if (exchange)
+    {
+        valid.append("relaxationCollisionNumber");
+        inverseZ =
+            1
+           /inputChecks::getInterval
+            (
+                coeffs, "relaxationCollisionNumber",
+                inputChecks::interval::atLeast(1)
+            );
+    }
+    inputChecks::rejectUnknown(coeffs, valid);
+    return inverseZ;
+}
+
 
 template<class CloudType>
 Foam::scalarSquareMatrix
 Foam::VariableSoftSphere<CloudType>::readAlpha() const
 {
-    // (values and names checked by gasCloud::checkInput)
+    // The scattering exponents: every species, the pairs optional, from 1
+    // (isotropic, VHS) to 2
+    using namespace inputChecks;
+
     const wordList& species = this->owner().typeIdList();
     const dictionary& perSpecies = this->coeffDict().subDict("alpha");
-    const dictionary pairs
-    (
-        this->coeffDict().subOrEmptyDict("alphaPairs")
-    );
+    for (const word& name : perSpecies.toc())
+    {
+        if (!species.found(name))
+        {
+            notOneOf(perSpecies, "alpha", name, species);
+        }
+    }
+
+    scalarList own(species.size());
+    forAll(species, p)
+    {
+        own[p] = getClosed(perSpecies, species[p], 1, 2);
+    }
 
     scalarSquareMatrix alpha(species.size());
     forAll(species, p)
     {
         forAll(species, q)
         {
-            alpha(p, q) =
-                0.5
-               *(
-                    perSpecies.get<scalar>(species[p])
-                  + perSpecies.get<scalar>(species[q])
-                );
+            alpha(p, q) = 0.5*(own[p] + own[q]);
         }
     }
+
+    const dictionary pairs(this->coeffDict().subOrEmptyDict("alphaPairs"));
     for (const word& p : pairs.toc())
     {
+        if (!species.found(p) || !pairs.isDict(p))
+        {
+            notOneOf(pairs, "alphaPairs", p, species);
+        }
         const dictionary& partners = pairs.subDict(p);
         for (const word& q : partners.toc())
         {
+            if (!species.found(q))
+            {
+                notOneOf(partners, p, q, species);
+            }
             const label i = species.find(p);
             const label j = species.find(q);
-            alpha(i, j) = alpha(j, i) = partners.get<scalar>(q);
+            alpha(i, j) = alpha(j, i) = getClosed(partners, q, 1, 2);
         }
     }
     return alpha;
@@ -146,14 +190,9 @@ Foam::VariableSoftSphere<CloudType>::VariableSoftSphere
 )
 :
     BinaryCollisionModel<CloudType>(dict, cloud, type),
-    Tref_(this->coeffDict().template get<scalar>("Tref")),
+    inverseZ_(readInverseZ(exchange)),
+    Tref_(inputChecks::getPositive(this->coeffDict(), "Tref")),
     alpha_(readAlpha()),
-    inverseZ_
-    (
-        exchange
-      ? 1/this->coeffDict().template get<scalar>("relaxationCollisionNumber")
-      : 0
-    ),
     gas_(nullptr)
 {}
 
