@@ -36,77 +36,13 @@ Description
 
 #include "fvCFD.H"
 #include "gasCloud.H"
-#include "basicSolidCloud.H"
-#include "demSolidCloud.H"
-#include "regionFill.H"
+#include "grainPhase.H"
 #include "inputChecks.H"
 #include "keywordChecks.H"
 #include "randomStreams.H"
 #include "loadBalance.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
-
-// Fill the regions of initDict into a new cloud of parcels of kind
-// CloudType (dictionary cloudProps) and write it
-template<class CloudType>
-static void fillSolids
-(
-    const fvMesh& mesh,
-    const word& cloudName,
-    const IOdictionary& cloudProps,
-    const IOdictionary& initDict
-)
-{
-    typedef typename CloudType::parcelType parcelType;
-
-    CloudType::checkInput(cloudName, mesh);
-
-    const basicSolidParcel::constantProperties constProps(cloudProps);
-    const axisymmetricMode axisymmetric(cloudProps, mesh, cloudName);
-
-    word alphaMaxWhat;
-    const scalar alphaMax = regionFill::alphaLimit(cloudProps, alphaMaxWhat);
-
-    inputChecks::rejectMisspelt(initDict, {"randomSeed", "regions"});
-    const label seed =
-        inputChecks::getLabelOrDefault(initDict, "randomSeed", 0, 0, 2000);
-    // The same stream on every processor (no processor number)
-    Random rnd(randomStreams::seed(seed, randomStreams::grainFill, 0));
-
-    Info<< "Initialising solid cloud " << cloudName << " (seed " << seed
-        << ")" << nl;
-
-    Cloud<parcelType> cloud(mesh, cloudName, IDLList<parcelType>());
-
-    const regionFill::cloudSetup setup{mesh, constProps, axisymmetric, rnd};
-
-    label nTotal = 0;
-    const dictionary& regions = initDict.subDict("regions");
-    for (const entry& e : regions)
-    {
-        if (!e.isDict())
-        {
-            inputChecks::badValue
-            (
-                regions, e.keyword(), "not a dictionary",
-                "a dictionary per region"
-            );
-        }
-        nTotal += regionFill::New(e.dict(), setup)->fill
-        (
-            cloud, alphaMax, alphaMaxWhat
-        );
-    }
-
-    Info<< "Solid parcels added: " << nTotal << nl << endl;
-
-    if (!inputChecks::keywordRecord::active() && !cloud.write())
-    {
-        FatalErrorInFunction
-            << "Failed writing cloud " << cloudName << exit(FatalError);
-    }
-}
-
 
 // Fill the solid cloud of the case, if its initialisation dictionary
 // exists, with parcels of the kind its cloudType names
@@ -127,31 +63,7 @@ static bool initialiseSolids(const fvMesh& mesh, const word& cloudName)
         return false;
     }
 
-    const IOdictionary initDict(header);
-    const IOdictionary cloudProps
-    (
-        inputChecks::readCloudProperties(cloudName, mesh)
-    );
-    const word kind
-    (
-        cloudProps.getOrDefault<word>("cloudType", "basicSolidCloud")
-    );
-
-    if (kind == "demSolidCloud")
-    {
-        fillSolids<demSolidCloud>(mesh, cloudName, cloudProps, initDict);
-    }
-    else if (kind == "basicSolidCloud")
-    {
-        fillSolids<basicSolidCloud>(mesh, cloudName, cloudProps, initDict);
-    }
-    else
-    {
-        inputChecks::notOneOf
-        (
-            cloudProps, "cloudType", kind, {"basicSolidCloud", "demSolidCloud"}
-        );
-    }
+    grainPhase::fill(cloudName, mesh, IOdictionary(header));
 
     return true;
 }

@@ -4,11 +4,13 @@
   SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
 
 Description
-    Registers the grain cloud kinds selectable by cloudType (grainPhase).
+    Registers the grain cloud kinds selectable by cloudType (grainPhase)
+    and their initial fills.
 
 \*---------------------------------------------------------------------------*/
 
 #include "CoupledGrainCloud.H"
+#include "fillGrainCloud.H"
 #include "basicSolidCloud.H"
 #include "demSolidCloud.H"
 

@@ -16,4 +16,21 @@ namespace Foam
 }
 
 
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::HashTable<Foam::grainPhase::fillFunction>& Foam::grainPhase::fillTable()
+{
+    // (built at the first registration, whatever the order of the static
+    // objects)
+    static HashTable<fillFunction> table;
+    return table;
+}
+
+
+Foam::grainPhase::addFill::addFill(const word& kind, fillFunction fillKind)
+{
+    fillTable().set(kind, fillKind);
+}
+
+
 // ************************************************************************* //

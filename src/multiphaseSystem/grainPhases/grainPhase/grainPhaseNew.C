@@ -49,4 +49,27 @@ Foam::autoPtr<Foam::grainPhase> Foam::grainPhase::New
 }
 
 
+void Foam::grainPhase::fill
+(
+    const word& cloudName,
+    const fvMesh& mesh,
+    const IOdictionary& initDict
+)
+{
+    const IOdictionary cloudProps
+    (
+        inputChecks::readCloudProperties(cloudName, mesh)
+    );
+    const word kind
+    (
+        inputChecks::modelNameOrDefault<grainPhase>
+        (
+            cloudProps, "cloudType", "basicSolidCloud"
+        )
+    );
+
+    (*fillTable()[kind])(cloudName, mesh, cloudProps, initDict);
+}
+
+
 // ************************************************************************* //
