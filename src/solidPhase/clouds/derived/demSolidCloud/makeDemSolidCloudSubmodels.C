@@ -70,5 +70,11 @@ makePairModelType(PairLinearSpringDashpot, demCollidingCloud);
 makeWallModelType(WallLinearSpringDashpot, demCollidingCloud);
 makeCollisionModelType(CartesianContacts, demSolidCloud);
 
+// cartesianContacts leaves out the contacts erosionPlanes turns off
+static const Foam::contactModels::add addContactsCartesianContacts
+(
+    Foam::CartesianContacts<Foam::demCollidingCloud>::typeName_()
+);
+
 
 // ************************************************************************* //

@@ -263,13 +263,18 @@ Foam::ErosionPlanes<CloudType>::ErosionPlanes
             "collisionModel", "none"
         )
     );
-    if (collisionless_ && contacts != "cartesianContacts")
+    if (collisionless_ && !contactModels::honoursContactsOff(contacts))
     {
+        std::string honouring;
+        for (const word& model : contactModels::honouring())
+        {
+            honouring += (honouring.empty() ? "" : " ") + model;
+        }
         inputChecks::badValue
         (
             this->coeffDict(), "collisionless", "true",
-            "false with collisionModel " + contacts + " (only"
-            " cartesianContacts honours it)"
+            "false with collisionModel " + contacts + " (only " + honouring
+          + " honours it)"
         );
     }
 

@@ -144,11 +144,7 @@ void Foam::CartesianContacts<CloudType>::gather(CloudType& cloud)
 
     // Berger's box: erosionPlanes says which grains are out
     // (collisionless) and counts the colliding grains per sub-step
-    planes_ =
-        ErosionPlanes<typename CloudType::kinematicCloudType>::find
-        (
-            cloud.functions()
-        );
+    planes_ = contactObserver<parcelType>::find(cloud.functions());
 
     for (parcelType& p : cloud)
     {
