@@ -416,7 +416,10 @@ Foam::scalar Foam::inputChecks::getPositiveOrDefault
     const scalar deflt
 )
 {
-    return getIntervalOrDefault(dict, keyword, interval::open(0, VGREAT), deflt);
+    return getIntervalOrDefault
+    (
+        dict, keyword, interval::open(0, VGREAT), deflt
+    );
 }
 
 
@@ -462,7 +465,10 @@ Foam::scalar Foam::inputChecks::getClosedOrDefault
     const scalar max
 )
 {
-    return getIntervalOrDefault(dict, keyword, interval::closed(min, max), deflt);
+    return getIntervalOrDefault
+    (
+        dict, keyword, interval::closed(min, max), deflt
+    );
 }
 
 

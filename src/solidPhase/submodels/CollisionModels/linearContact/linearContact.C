@@ -17,7 +17,13 @@ Foam::linearContact::linearContact(const dictionary& coeffs)
     dict_(coeffs),
     kn_(inputChecks::getPositive(coeffs, "kn")),
     kt_(inputChecks::getPositive(coeffs, "kt")),
-    e_(inputChecks::getInterval(coeffs, "e", inputChecks::interval::above(0, 1))),
+    e_
+    (
+        inputChecks::getInterval
+        (
+            coeffs, "e", inputChecks::interval::above(0, 1)
+        )
+    ),
     mu_(inputChecks::getNonNegative(coeffs, "mu")),
     tangentialDamping_
     (
