@@ -56,6 +56,7 @@ import sys
 import numpy as np
 
 from rmf import erosion, foam
+from rmf.dem import D, KN, MASS, RHO, zeta
 
 BOX = os.path.join(foam.PROJECT_DIR, "validation", "demContacts", "box")
 BUILD = os.path.join(foam.PROJECT_DIR, "build", "bench", "dem")
@@ -63,22 +64,13 @@ BUILD = os.path.join(foam.PROJECT_DIR, "build", "bench", "dem")
 # step of 2e-5 s is 34 of them)
 PER_CASE_STEP = 34
 
-D = 1e-3
-RHO = 2700.0
-MASS = RHO*math.pi*D**3/6
-KN = KT = 8000.0
+KT = KN                     # rmf.dem: D, RHO, MASS, KN (Berger's grains)
 E = 0.8
 MU = 0.2
 G = 1.63
 LX, LY, LZ = 0.010, 0.030, 0.005
 N = 800
 SETTLE = 0.25               # [s]
-
-
-def zeta(e):
-    lne = math.log(e)
-    return -lne/math.sqrt(math.pi**2 + lne**2)
-
 
 M_EFF = MASS/2
 ETA_N = 2*math.sqrt(M_EFF*KN)*zeta(E)
