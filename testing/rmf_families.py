@@ -86,7 +86,7 @@ def snider(dst, np_, seed=None, hybrid=False):
     stochastic isotropy keeps the second of its Gaussian pair in
     function-static variables, not in the cloud's stream: every run starts
     with a cached sample of 0, so a restart draws differently
-    (doc/physics.md 1.4, test_stochastic_isotropy_not_exact)."""
+    (doc/physics.md#restart, test_stochastic_isotropy_not_exact)."""
     case = foam.copy_setup(SNIDER, dst)
     set_entries(case, [("system/grainsInitialiseDict", "regions/column/nParcels", 20000)])
     _isotropy(case, "restartableStochastic")
@@ -168,7 +168,7 @@ def wedge(dst, np_, seed=None, extra=()):
 
 
 def vibrating(dst, np_, seed=None):
-    """The wedge with vibrational levels (doc/physics.md 2.5): the argon
+    """The wedge with vibrational levels (doc/physics.md#vibration): the argon
     given two fictitious oscillators (400 K, degeneracy 2; Z_v 2) that
     the fill, FreeStream's inflow, the diffuse walls, the grains'
     re-emission and the collisions all draw, exchanged by the

@@ -1,6 +1,6 @@
 # rarefiedMultiphaseFoam. Copyright (C) 2026 The rarefiedMultiphaseFoam authors
 # SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
-"""Axisymmetric gas (doc/physics.md 6): argon at rest (1e20 m^-3,
+"""Axisymmetric gas (doc/physics.md#axisymmetric): argon at rest (1e20 m^-3,
 300 K) in a 2.5 degree wedge about the x axis (x, r in [0, 0.05] m, 10 x 10
 cells, Maxwellian walls at 300 K) stays uniform in density and at the wall
 temperature, with radial weighting (maxRadialWeight 10) and without; with the
@@ -331,7 +331,7 @@ def _collisionless(name, outer, ends, steps):
 def test_specular_wedge():
     """Simulators moving fast azimuthally along a specular outer wall, and
     into its corners with the specular end walls, used to hang the run
-    (doc/physics.md 6: each reflection advanced them by a few ulps).  The
+    (doc/physics.md#axisymmetric: each reflection advanced them by a few ulps).  The
     closed unweighted wedge with specular walls and no collisions runs 40
     steps; specular reflection and the turn into the plane keep every
     speed, so the simulators' kinetic energy stays as it was (to 1e-12
@@ -357,7 +357,7 @@ def test_specular_wedge():
 
 def test_wedge_walk_exact():
     """The axisymmetric mode's Cartesian move (tracking cartesian, wedgeWalk,
-    doc/physics.md 2.6) ends each path at its analytic end.  The unweighted
+    doc/physics.md#cartesian-move) ends each path at its analytic end.  The unweighted
     wedge with every boundary open (no walls, no inflow) and no collisions
     moves its 15 000 simulators WALK_STEPS = 10 steps of 5 us (a most
     probable speed crosses 3.5 cells); a simulator still in then ended on

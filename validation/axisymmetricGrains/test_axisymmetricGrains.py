@@ -1,6 +1,6 @@
 # rarefiedMultiphaseFoam. Copyright (C) 2026 The rarefiedMultiphaseFoam authors
 # SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
-"""Axisymmetric grains (doc/physics.md 6): the parcels of the
+"""Axisymmetric grains (doc/physics.md#axisymmetric): the parcels of the
 solid cloud move in 3-D inside a 2.5 degree wedge about the x axis, are
 turned back into the meridional plane, and are weighted radially.
 
@@ -47,7 +47,7 @@ turned back into the meridional plane, and are weighted radially.
    validation/axisymmetricGas, maxRadialWeight 10 for the gas and the
    grains), interphaseCoupling oneWay, 1000 steps of 5 us.  Their heating
    rate in each fifth of the radius is the free-molecular
-   pi R^2 n <c> 2 k (T_g - T_p)/(m_p c_p) (doc/physics.md 4.2, eps 0, alpha_T 1;
+   pi R^2 n <c> 2 k (T_g - T_p)/(m_p c_p) (doc/physics.md#one-way, eps 0, alpha_T 1;
    validation/freeMolecularCoupling) within 2 % (that test's tolerance):
    a sum without the gas's weight factor gives up to RWF = 10 times less
    at the outer radius.
@@ -55,7 +55,7 @@ turned back into the meridional plane, and are weighted radially.
    0.5-0.6 % less, at 4-10 of the grains' standard errors.  The cause is
    the gas, not the coupling: with radial weights the wedge's real
    molecule count is not conserved (each clone or delete changes it by
-   a simulator's weight; doc/physics.md 6), so it walks, the same for
+   a simulator's weight; doc/physics.md#axisymmetric), so it walks, the same for
    every grain (measured: from 1.006 to 0.961 n_0 over the run, mean
    0.993), which the grains' scatter does not see.  The gas's own state,
    n from rhoN summed over the wedge every 50 steps (trapezoid mean) and
@@ -163,8 +163,8 @@ def _walk(case, max_weight, steps, dt):
     (W RWF(r_k+1))^2 f (1 - f), f the fractional part of the ratio, and
     |ratio - 1| events are expected.  The total is a martingale, so its
     variance is the sum of c_k times those over paths and steps (exact
-    for the ideal paths; the code's grazing-wall slide, doc/physics.md
-    6, departs from them for parcels on the outer wall)."""
+    for the ideal paths; the code's grazing-wall slide, doc/physics.md#axisymmetric,
+    departs from them for parcels on the outer wall)."""
     t0 = os.path.join(case, "0", "lagrangian", "grains")
     y = foam.read_positions(os.path.join(t0, "positions"))[:, 1]
     U = foam.read_list(os.path.join(t0, "U"))

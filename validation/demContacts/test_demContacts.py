@@ -2,7 +2,7 @@
 # SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
 """Soft-sphere DEM contacts: verification of pairLinearSpringDashpot and
 wallLinearSpringDashpot under pairCollision, and of the same contacts
-under cartesianContacts (doc/physics.md 5.4, 5.4.1), end to end on the
+under cartesianContacts (doc/physics.md#dem, #cartesian-contacts), end to end on the
 solver with the demSolidCloud (case box/: a walled cube of 10 mm, no
 gas).  Each check runs with both collision models ("pair": a case step
 per contact step; "cartesian": case steps of PER_STEP = 10 contact steps
@@ -727,7 +727,7 @@ def test_settled_bed(contacts):
     the random-packing range (0.55 random loose packing at high friction
     to 0.64) because one bed of 588 grains is that noisy; narrower needs a
     larger bed.  Measured 0.600 with cartesianContacts (2026-12-06) and
-    0.622 with pairCollision (2026-12-06, doc/physics.md 5.4).
+    0.622 with pairCollision (2026-12-06, doc/physics.md#dem).
     Stiffness k_n = k_t = 20 N/m (not 8000):
     the packing is set by friction and restitution while the overlaps
     under the bed's weight stay small (12 layers x m g/k = 1.4e-3 d here),

@@ -14,8 +14,8 @@ matches what this script makes.  Changing a reference value is a reviewed
 commit with a reason (STYLE.md).
 
 The free-molecular sphere C_D is rmf.kinetic's surface integral, with the
-closed form of doc/physics.md 4.2 printed next to it as a cross-check;
-Loth's (2008) C_D and C_L are rmf.kinetic's typing of doc/physics.md 4.5
+closed form of doc/physics.md#one-way printed next to it as a cross-check;
+Loth's (2008) C_D and C_L are rmf.kinetic's typing of doc/physics.md#loth
 (its docstring says what else Test-dragLaws checks the C++ against).
 """
 

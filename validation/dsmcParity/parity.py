@@ -149,7 +149,7 @@ def _strip_class(path):
 
 # Outputs of ours that dsmcFoam does not have: the gas's mean free path
 # (gasCloud writes it at every write time, gas-only runs included) and the
-# gas's restart state and its account's totals (doc/physics.md 1.4)
+# gas's restart state and its account's totals (doc/physics.md#restart)
 OURS_ONLY = {"lambda.gas", "gasCloudState", "particleAccountState"}
 
 

@@ -12,7 +12,7 @@ Every file of the last time directory (fields, parcels, uniform/: time,
 cloud properties, every model's restart state) must be identical in the
 two runs: a random draw, a remainder or a mean the restart did not carry
 changes the parcels in the last bits at least.  The restart state is
-what doc/physics.md 1.4 lists.  On 2 ranks (decomposed once)
+what doc/physics.md#restart lists.  On 2 ranks (decomposed once)
 each processor directory is compared.
 
 The runs are short (N = 5 or 10 steps): any state not carried shows at
@@ -116,7 +116,7 @@ def test_exact_restart(name):
 
 
 def test_stochastic_isotropy_not_exact():
-    """The known exception (doc/physics.md 1.4): with upstream's stochastic
+    """The known exception (doc/physics.md#restart): with upstream's stochastic
     isotropy the restarted run differs; if this fails, upstream's model
     has become restartable and the exception can go."""
     diff, _ = restart_pair("upstreamIsotropy")

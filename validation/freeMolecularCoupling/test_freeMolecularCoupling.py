@@ -1,6 +1,6 @@
 # rarefiedMultiphaseFoam. Copyright (C) 2026 The rarefiedMultiphaseFoam authors
 # SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
-"""Free-molecular gas-grain coupling, interphaseCoupling oneWay (items 2 and 7; doc/physics.md 4.2): the force and heat the DSMC gas gives a
+"""Free-molecular gas-grain coupling, interphaseCoupling oneWay (items 2 and 7; doc/physics.md#one-way): the force and heat the DSMC gas gives a
 grain held in it, against the analytic free-molecular values, end to end
 on the solver.
 
@@ -33,9 +33,9 @@ the bound is Student's t_9 sigma).
    periodic cell about once a step, which the uniform box does not mind):
    the force along U divided by
    1/2 rho |U|^2 pi R^2 must be the free-molecular sphere C_D(s, T_p/T_g)
-   of doc/physics.md 4.2 (rmf.kinetic's closed form, which
+   of doc/physics.md#one-way (rmf.kinetic's closed form, which
    Test-dragLaws checks against dragLaws::freeMolecularCd) within 2 %
-   (the verification set's 2-3 %, doc/physics.md 8, its tighter end); and within t_9 sigma of
+   (the verification set's 2-3 %, doc/physics.md#verification, its tighter end); and within t_9 sigma of
    the noise, so a bias well below 2 % is still caught when the noise allows.
    The force across U must be below 1 % of the drag.
 
@@ -43,7 +43,7 @@ the bound is Student's t_9 sigma).
    eps = 0.1, alpha_T = 0.9 (so that the factor (1 - eps) alpha_T = 0.81
    is exercised), for argon (zeta = 0) and nitrogen (zeta = 2, Larsen-
    Borgnakke exchange keeps its rotational energy in equilibrium).  The
-   expectation of doc/physics.md 4.2's Q over a Maxwellian at rest with number
+   expectation of doc/physics.md#one-way's Q over a Maxwellian at rest with number
    density n (the sum (W_g/V) sum_j becomes n E[.]): with w the molecular
    velocity, E|w| = <c> = sqrt(8 k T_g/(pi m)), E[|w| m |w|^2/2] =
    2 k T_g <c> (the flux-weighted mean translational energy) and
@@ -75,7 +75,7 @@ the bound is Student's t_9 sigma).
 
 5. A light grain released in the uniform stream relaxes to the gas's
    velocity and temperature at the analytic free-molecular rates of the
-   linearised doc/physics.md 4.2 (test_light_grain_relaxation,
+   linearised doc/physics.md#one-way (test_light_grain_relaxation,
    whose docstring derives the rates and the tolerance).
 
 Family-wise error: 2.5e-4 (rmf_testing.MODULE_ALPHA) over m = 75
@@ -111,7 +111,7 @@ T_GAS = 300.0               # [K]
 D_GRAIN = 1e-5              # [m]
 AREA = math.pi*(D_GRAIN/2)**2
 STEPS, WRITE_EVERY = 1000, 100
-TOL = 0.02                  # doc/physics.md 8: 2-3 %, tighter end
+TOL = 0.02                  # doc/physics.md#verification: 2-3 %, tighter end
 COMPARISONS = 5 + 4 + 2*30 + 6     # header, "Family-wise error"
 N_SIGMA = z_limit(COMPARISONS)      # noise bound, computed noise
 T_SIGMA = t_limit(STEPS//WRITE_EVERY - 1, COMPARISONS)  # noise from ten intervals
@@ -299,7 +299,7 @@ def test_missing_coupling_keyword(filled):
 
 
 # ---------------------------------------------------------------------------
-# 4. Mean free path and grain Knudsen number (doc/physics.md section 2)
+# 4. Mean free path and grain Knudsen number (doc/physics.md#gas)
 
 D_REF, T_REF = 4.17e-10, 273.0     # argon's VHS diameter and Tref (box/constant)
 
@@ -397,7 +397,7 @@ def test_light_grain_relaxation():
     U_g/sqrt(2kT_g/m) = 0.1, T_g = 300 K), eps = 0, alpha_T = 1:
       A  released at rest at T_p = T_g: its velocity relaxes,
       B  moving with the stream at T_p = 200 K: its temperature relaxes.
-    Linearised doc/physics.md 4.2 for a drifting Maxwellian with small slip
+    Linearised doc/physics.md#one-way for a drifting Maxwellian with small slip
     u = U_g - v_p (E[w |w|] = (4/3) <c> u + O(u^3), E[w] = u; with
     sqrt(2 k T_p/m) = (sqrt(pi)/2) <c_p>):
         F = pi R^2 n m_g u <c> [ (4/3)(1 + 4/9 (1-eps)(1-alpha_T))

@@ -1,6 +1,6 @@
 # rarefiedMultiphaseFoam. Copyright (C) 2026 The rarefiedMultiphaseFoam authors
 # SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
-"""The gasMeanFields function object (doc/physics.md 2): the gas's mean
+"""The gasMeanFields function object (doc/physics.md#gas): the gas's mean
 velocity, temperatures and pressure from the batch means, in every cell.
 
 - Where every cell has gas (stock dsmcFoam's freeSpacePeriodic tutorial,

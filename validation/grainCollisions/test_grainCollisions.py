@@ -307,7 +307,7 @@ def test_stale_majorant():
     """A majorant far below the cell's pairs does not stall the cell: every
     cell starts with (sigma c_r)_max = 1e-30 m^3/s, read as a restart's
     sigmaCrMax, and the model raises it to the bound of the step's pairs
-    (doc/physics.md 5.2), so the collision rate over 50 steps is the
+    (doc/physics.md#ntc), so the collision rate over 50 steps is the
     kinetic theory's, tolerance Z/sqrt(C) as above.  Raised by candidates
     alone (the model before 2026-12-02), the cells drew 1e-28 candidates
     per step and never collided."""

@@ -1,6 +1,6 @@
 # rarefiedMultiphaseFoam. Copyright (C) 2026 The rarefiedMultiphaseFoam authors
 # SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
-"""The grains' Cartesian tracking (tracking cartesian, doc/physics.md 3.5)
+"""The grains' Cartesian tracking (tracking cartesian, doc/physics.md#grain-tracking)
 follows upstream's barycentric tracking to round-off.
 
 A reduced copy of the Snider sedimentation set-up (20 000 parcels, MPPIC
@@ -37,7 +37,7 @@ to 5e-16 m and the velocities before the redraw to 1e-16.  The
 comparison would then test the stream, not the tracking.
 
 Why packedCells false: it stops a parcel where its cell's or a
-neighbour's averaged alpha reaches alpha_cp (doc/physics.md 5.3.1), and
+neighbour's averaged alpha reaches alpha_cp (doc/physics.md#two-sided), and
 at 40 steps the two trackings then differ by up to 3.8e-9 m serially
 and 3.0e-8 m on 2 ranks, in the same cells: the bed forming at the floor
 amplifies round-off sooner, as it does later without it.

@@ -19,7 +19,7 @@ Free-molecular: the reflected molecules crowd near the wall (about 1e17
 m^-3), and an incoming molecule crossing the 2 cm meets one of them with
 probability ~5e-4, so the surface sees the free stream's molecules as
 they are.  The loads are then those of a flat plate facing a drifting
-Maxwellian with full accommodation (doc/physics.md 4.2's surface element,
+Maxwellian with full accommodation (doc/physics.md#one-way's surface element,
 rmf.kinetic's element_coefficients for the pressure):
     pressure  p = 1/2 rho U^2 C_p(s, T_w/T),
     heat      q = E_in + N_in (zeta/2) k T - N_in (2 + zeta/2) k T_w,

@@ -1,7 +1,7 @@
 # rarefiedMultiphaseFoam. Copyright (C) 2026 The rarefiedMultiphaseFoam authors
 # SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
 """Our restartableStochastic isotropy against upstream's stochastic
-(doc/physics.md 5.3): the same model, Gaussians drawn differently.
+(doc/physics.md#mppic): the same model, Gaussians drawn differently.
 
 The periodic granular box of validation/grainCollisions (20 000 parcels of
 1 mm, alpha 0.0105, basic averaging) with two opposing streams,

@@ -1,7 +1,7 @@
 # rarefiedMultiphaseFoam. Copyright (C) 2026 The rarefiedMultiphaseFoam authors
 # SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
 """Loth coupling and the adaptive switch (
-doc/physics.md 4.5, 4.6), end to end on the solver.
+doc/physics.md#loth, #adaptive), end to end on the solver.
 
 1. interphaseCoupling Loth with a prescribed uniform gas, no DSMC (no
    constant/dsmcProperties): one light grain released at rest in a
@@ -474,7 +474,7 @@ def test_loth_bad_averaging_steps():
 
 
 # ---------------------------------------------------------------------------
-# adaptive (doc/physics.md 4.6)
+# adaptive (doc/physics.md#adaptive)
 
 @pytest.mark.parametrize("KnSwitch,fm", [(None, 0.5), (1e5, 0.0), (1.0, 1.0)])
 def test_adaptive_fractions(KnSwitch, fm):

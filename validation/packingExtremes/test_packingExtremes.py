@@ -3,7 +3,7 @@
 """The stability matrix's packing rows (doc/speed-accuracy.md, "Stability
 at the extremes"): a bed filled just below close packing, alpha_0 = 0.59
 against alpha_cp = 0.6, and the Harris-Crighton stress near its
-singularity, eps = 1e-12 (doc/physics.md 5.3), with the project's
+singularity, eps = 1e-12 (doc/physics.md#mppic), with the project's
 twoSided packing model, end to end on the solver.
 
 Case: the Snider tutorial's set-up (glass beads d = 0.3 mm, parcels of
@@ -19,7 +19,7 @@ bed is held, not blown apart or compacted through its limit.
 - Every parcel present and finite at every write, no NaN in the log.
 - The packing model's averaged volume fraction (alphaAverage.grains)
   at most 0.68 in every cell at every write: the cell bound of the
-  Snider validation (doc/physics.md 5.3, rmf.snider), which this
+  Snider validation (doc/physics.md#mppic, rmf.snider), which this
   parcel weight is set for.
 - The bed's mean alpha over the layers below 0.09 m (away from its
   loosening top) within 0.60 +- 0.02 at 0.3 s: the Snider bed's
@@ -117,7 +117,7 @@ def test_long_steps(scale):
     """The stability matrix's "deltaT at 1x, 2x and 10x the MPPIC limit":
     a parcel should cross less than its cell per step (the explicit
     stress correction and the averaging see the parcels once a step;
-    doc/physics.md 5.3).  SolidCloud logs at every write the largest
+    doc/physics.md#mppic).  SolidCloud logs at every write the largest
     travel |U| deltaT/h since the last write and warns above 1.  The
     narrow Snider column (the tutorial's settling, twoSided packing, 0.6
     s) at the tutorial's deltaT (1 ms: the falling grains reach about a

@@ -2,7 +2,7 @@
 # SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
 """PatchInflow: inflow through one patch with a radial
 profile of n, T and U, for a gas with rotational energy (water vapour,
-doc/physics.md 7.2, mixed here with argon to exercise the composition).
+doc/physics.md#apollo-psi, mixed here with argon to exercise the composition).
 
 Case: an empty box x in [0, 10] mm, y, z in [-10, 10] mm, 2 x 10 x 10
 cells; the x = 0 face (100 faces, centres at r = 1.4 to 12.7 mm from the

@@ -86,7 +86,7 @@ def overpacking_failed(checks, runs):
 @pytest.mark.long
 def test_overpacking_bounds(results):
     """Full size (--long only): the layer and averaged cell bounds of
-    doc/physics.md 5.3 in the serial, 2-rank and e = 0.5 runs.  They
+    doc/physics.md#mppic in the serial, 2-rank and e = 0.5 runs.  They
     hold at the tutorial's parcel weight; the reduced runs' parcels are 4
     times heavier (one alone is alpha 0.067 of a cell, near the cell
     bound's margin of 0.08; a layer's 2 000 parcels scatter by 0.013,
@@ -98,7 +98,7 @@ def test_overpacking_bounds(results):
 
 
 def test_free_fall_predicted():
-    """twoSided with predictMean (doc/physics.md 5.3.1), at the tutorial's
+    """twoSided with predictMean (doc/physics.md#two-sided), at the tutorial's
     parcel weight: the suspension falls freely until the bed reaches it,
     its mean U_z away from the bed front and the top -g t within
     rmf.snider.FREE_FALL_TOL (0.5 %) at 0.05, 0.1 and 0.15 s (the stress
@@ -119,7 +119,7 @@ def narrow_results():
 def test_narrow_averaged_cell_bound(narrow_results):
     """The averaged alpha the twoSided packing model acts on stays at or
     below alphaPacked + 0.08 in every cell from 0.1 s to 0.6 s, at the
-    tutorial's parcel weight (doc/physics.md 5.3)."""
+    tutorial's parcel weight (doc/physics.md#mppic)."""
     _, s, _ = narrow_results
     assert s["checks"]["averaged cell bound"], s["alphaMaxAveraged"]
 
@@ -143,7 +143,7 @@ QUARTERS_FLAT = 1.25
 
 
 def test_narrow_continuous_gradient_spreads_parcels(narrow_results):
-    """twoSided with smoothing 1 (doc/physics.md 5.3.1): the parcels of
+    """twoSided with smoothing 1 (doc/physics.md#two-sided): the parcels of
     the settled bed spread evenly through each cell, where the
     tetrahedra's gradient (the tutorial, smoothing 0) gathers them under
     the faces."""
@@ -182,7 +182,7 @@ def test_narrow_packed_cells_hold_layers(narrow_results):
     """twoSided with packedCells (the tutorial's) holds the settled bed's
     layers at 0.6 s within its ensemble's scatter (narrow_layer_bound,
     0.638).  Without packedCells the layer above the floor layer creeps
-    (doc/physics.md 5.3.1): such a run exceeds the bound with probability
+    (doc/physics.md#two-sided): such a run exceeds the bound with probability
     0.55 (UNPACKED_LAYER), and the --long contrast below tells the two
     apart."""
     _, with_it, _ = narrow_results
@@ -223,7 +223,7 @@ def test_variants_picture(variant_results):
 
 
 def test_stochastic_overpacks(variant_results):
-    """doc/physics.md 7.1: NTC collisions alone know only binary collisions and
+    """doc/physics.md#snider: NTC collisions alone know only binary collisions and
     let the bed pack beyond what MPPIC's stress allows: its bottom layer
     exceeds the layer bound that the MPPIC run keeps, parcels conserved."""
     passed, s = variant_results[0]["stochastic"]

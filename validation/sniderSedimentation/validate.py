@@ -1,6 +1,6 @@
 # rarefiedMultiphaseFoam. Copyright (C) 2026 The rarefiedMultiphaseFoam authors
 # SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
-"""Snider sedimentation validation (doc/physics.md 7.1).
+"""Snider sedimentation validation (doc/physics.md#snider).
 
     /usr/bin/python3 validate.py [--full] [--build DIR]
 
@@ -38,7 +38,7 @@ narrow(): the over-packing bounds at the tutorial's parcel weight in
 ./Alltest: a column of 5 x 5 of the tutorial's cells (0.046 m square)
 holding a ninth of its parcels (18 026 x 749), to 0.6 s, serial; the
 tests run it also with twoSided's smoothing 1 and without its
-packedCells (doc/physics.md 5.3.1).
+packedCells (doc/physics.md#two-sided).
 The two single-rank runs go side by side on the machine's 2 cores, then
 the parallel one.
 
@@ -66,7 +66,7 @@ REDUCTION = 4
 # seeds 0 to RESTITUTION_SEEDS - 1; rmf.snider: why 8)
 RESTITUTION_SEEDS = 8
 
-# Variants of the tutorial (doc/physics.md 7.1, 5.2, 5.3, 5.5):
+# Variants of the tutorial (doc/physics.md#snider, #ntc, #mppic, #hybrid):
 # grainsProperties entries each sets
 VARIANTS = {
     # v1912's packing models instead of ours (their coefficients are in
@@ -80,7 +80,7 @@ VARIANTS = {
                    "subModels/isotropyModel": "none",
                    "subModels/stochasticCollisionModel": "NTCHardSphere"},
     # NTC in cells below alphaSwitch (binary collisions valid below 0.1,
-    # doc/physics.md 5.2), MPPIC as in the tutorial
+    # doc/physics.md#ntc), MPPIC as in the tutorial
     "hybrid": {"subModels/stochasticCollisionModel": "NTCHardSphere",
                "subModels/NTCHardSphereCoeffs/alphaSwitch": 0.1},
 }

@@ -1,7 +1,7 @@
 # rarefiedMultiphaseFoam. Copyright (C) 2026 The rarefiedMultiphaseFoam authors
 # SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
 """Two-way free-molecular coupling, interphaseCoupling twoWayDirect and
-twoWayIndirect (doc/physics.md 4.3, 4.4 and section 8's
+twoWayIndirect (doc/physics.md#two-way-direct, #two-way-indirect and #verification's
 "thermal and momentum relaxation of gas + dust in a closed periodic box"),
 end to end on the solver.
 
@@ -26,7 +26,7 @@ testing/rmf_box.py).
   T_g is the translational temperature, rotation being in equilibrium
   with it at the end).
   dt = 1e-5 s, 700 steps, written every 100.  Free-molecular rates at the
-  start (doc/physics.md 4.2, Epstein-like): the slip decays at ~1e3 /s, the
+  start (doc/physics.md#one-way, Epstein-like): the slip decays at ~1e3 /s, the
   temperature gap at (1 + C_s/C_g) pi R^2 n <c> 2k/(m_p c_p) ~ 700 /s, so
   700 steps are ~5 relaxation times; a gas simulator meets a grain with
   probability ~2e-3 per step (logged: "largest probability").

@@ -1,6 +1,6 @@
 # rarefiedMultiphaseFoam. Copyright (C) 2026 The rarefiedMultiphaseFoam authors
 # SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
-"""The variable soft sphere (VSS, doc/physics.md 2.4) in the one-cell
+"""The variable soft sphere (VSS, doc/physics.md#vss) in the one-cell
 periodic gas box of validation/freeMolecularCoupling (testing/rmf_box.py),
 argon at 1e20 m^-3 and 273 K (Koura and Matsumoto's VSS data: d =
 4.11e-10 m at 273 K, omega 0.81, alpha 1.40; the VHS control: Bird's

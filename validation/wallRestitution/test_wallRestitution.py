@@ -2,7 +2,7 @@
 # SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
 """The stability matrix's wall restitution at its extremes, e = 1 and
 e = 0 (doc/speed-accuracy.md, "Stability at the extremes"; the rebound of
-doc/physics.md 3.3), end to end on the solver.
+doc/physics.md#grain-walls), end to end on the solver.
 
 Case: the Snider tutorial's closed box (0.138 x 0.138 x 0.3 m, 15 x 15 x
 40 cells, walls on every side) in vacuum with 2000 parcels dropped from
@@ -73,7 +73,7 @@ def make_case(e):
 def parcels(case, time):
     """Positions and velocities at time, in the order of the parcels'
     identities (origId; one processor): the cloud re-orders its parcels
-    by cell (doc/physics.md 1.6), so a parcel's place in the list changes
+    by cell (doc/physics.md#memory-order), so a parcel's place in the list changes
     from one write to the next."""
     path = os.path.join(case, time, "lagrangian", "grains")
     x = foam.read_positions(os.path.join(path, "positions"))

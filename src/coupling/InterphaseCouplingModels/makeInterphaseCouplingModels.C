@@ -4,7 +4,7 @@
   SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
 
 Description
-    Registers the interphase coupling models (doc/physics.md section 4) for
+    Registers the interphase coupling models (doc/physics.md#coupling) for
     each grain cloud kind (basicSolidCloud, demSolidCloud), with gasCloud
     as the gas.
 

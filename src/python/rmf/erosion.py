@@ -1,6 +1,6 @@
 # rarefiedMultiphaseFoam. Copyright (C) 2026 The rarefiedMultiphaseFoam authors
 # SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
-"""Regolith erosion box (doc/physics.md section 7.3): the grains before
+"""Regolith erosion box (doc/physics.md#erosion-box): the grains before
 they settle, the erosion series of a run, its figures and plots.
 
     /usr/bin/python3 -m rmf.erosion bed CASE [--seed N]

@@ -123,7 +123,7 @@ def run(case, *args, log=None, np_=1):
 
 # reconstructPar's options for every lagrangian field: without a selection
 # v1912 leaves out fields of lists per parcel (the DEM contact histories,
-# collisionRecords*; doc/physics.md 1.4)
+# collisionRecords*; doc/physics.md#restart)
 RECONSTRUCT_ALL = ("-lagrangianFields", '(".*")')
 
 

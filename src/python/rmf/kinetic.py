@@ -2,11 +2,11 @@
 # SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
 """Kinetic-theory references for the grains' drag and heat, computed apart
 from the C++ (src/coupling/dragLaws): the laws use the math module only,
-so they stand as an independent typing of doc/physics.md 4.2 and 4.5.
+so they stand as an independent typing of doc/physics.md#one-way and #loth.
 validation/dragLaws/reference.py makes Test-dragLaws' reference table from
 them, and validation/dragLaws/test_reference.py checks them.
 
-Free-molecular sphere drag C_D(s): not from the closed form of doc/physics.md 4.2
+Free-molecular sphere drag C_D(s): not from the closed form of doc/physics.md#one-way
 but by integrating over the sphere the momentum flux of a drifting
 Maxwellian gas onto a flat surface element with diffuse re-emission at the
 wall temperature (pressure and shear of the element from kinetic theory:
@@ -14,7 +14,7 @@ incident flux of a drifting Maxwellian, half-Maxwellian re-emission; e.g.
 Schaaf & Chambre 1958, Bird 1994 ch. 7).  Composite Simpson rule in the
 polar angle; the closed form is given next to it as a cross-check.
 
-Loth (2008) drag and lift and his Nusselt heat: doc/physics.md 4.5 typed
+Loth (2008) drag and lift and his Nusselt heat: doc/physics.md#loth typed
 here again, term by term.  A typing error shared by the doc, this module
 and the C++ would pass the tables; Test-dragLaws therefore also checks the
 C++ against laws published apart from Loth's, which his correlation
@@ -72,7 +72,7 @@ def cd_fm_integrated(s, tw_by_tg, n=4000):
 
 
 def cd_fm_closed(s, tp_by_tg):
-    """doc/physics.md 4.2 closed form (for the cross-check column only)."""
+    """doc/physics.md#one-way closed form (for the cross-check column only)."""
     s2 = s*s
     return (math.exp(-s2)*(2*s2 + 1)/(SQRT_PI*s**3)
             + math.erf(s)*(4*s2*s2 + 4*s2 - 1)/(2*s2*s2)
@@ -94,8 +94,8 @@ def speed_moments(s):
 
 
 def heat_fm(s, tp_by_tg):
-    """Free-molecular heat of a fully accommodating sphere (doc/physics.md
-    4.2) over pi R^2 n k T_g c_m: the molecules that strike it bring their
+    """Free-molecular heat of a fully accommodating sphere (doc/physics.md#one-way)
+    over pi R^2 n k T_g c_m: the molecules that strike it bring their
     kinetic energy in its frame, E|w|^3 m/2 = k T_g c_m E|w/c_m|^3, and
     leave with 2 k T_p each."""
     m1, m3 = speed_moments(s)
@@ -103,7 +103,7 @@ def heat_fm(s, tp_by_tg):
 
 
 # ---------------------------------------------------------------------------
-# Loth (2008), doc/physics.md 4.5
+# Loth (2008), doc/physics.md#loth
 
 def loth_cd(re, ma, gamma, tp_by_tg):
     if re < 45:
@@ -132,7 +132,7 @@ def loth_cd(re, ma, gamma, tp_by_tg):
 
 
 def loth_cl(re, omega):
-    """C_L(Re, omega*) with Omega* = omega*/2 (doc/physics.md 4.5)."""
+    """C_L(Re, omega*) with Omega* = omega*/2 (doc/physics.md#loth)."""
     if omega <= 0:
         return 0.0
     eps = math.sqrt(omega/re)
@@ -145,7 +145,7 @@ def loth_cl(re, omega):
 
 
 def nusselt(re, kn, gamma, pr):
-    """Loth's heat (doc/physics.md 4.5): Ranz-Marshall's continuum Nu_c,
+    """Loth's heat (doc/physics.md#loth): Ranz-Marshall's continuum Nu_c,
     the free-molecular Nu_fm of a sphere at rest (alpha_T = 1), and
     Sherman's interpolation between them."""
     nu_c = 2 + 0.6*math.sqrt(re)*pr**(1/3)
@@ -164,12 +164,12 @@ def analytic_grain(gas, grain, t_end, law="freeMolecular", n=2000):
     and
         Q = pi R^2 n [m/2 E|w|^3 - 2 k T_p E|w|],
     the free-molecular drag and heat of a fully accommodating, diffusely
-    re-emitting sphere (doc/physics.md 4.2): the molecules that strike the
+    re-emitting sphere (doc/physics.md#one-way): the molecules that strike the
     grain bring their kinetic energy in its frame and leave with 2 k T_p
     each.  law "Loth": loth_cd's Loth C_D(Re, Ma, gamma, T_p/T_g) and
-    Nusselt heat Q = Nu pi d kappa (T_g - T_p) (doc/physics.md 4.5; alpha_T
+    Nusselt heat Q = Nu pi d kappa (T_g - T_p) (doc/physics.md#loth; alpha_T
     1, Eucken's Pr 2/3, kappa = mu c_p,g/Pr), mu the VHS law's at T_g
-    (gas's d, omega, Tref: doc/physics.md 2.3), as the solver's gas dsmc
+    (gas's d, omega, Tref: doc/physics.md#cell-averages), as the solver's gas dsmc
     takes it from the cell's averaged temperature."""
     m, nd, Tg, U = gas["m"], gas["n"], gas["T"], gas["U"]
     d, rho_p, cp = grain["d"], grain["rho"], grain["cp"]

@@ -1,13 +1,13 @@
 # rarefiedMultiphaseFoam. Copyright (C) 2026 The rarefiedMultiphaseFoam authors
 # SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
-"""Snider sedimentation (doc/physics.md section 7.1): profiles, checks and plots.
+"""Snider sedimentation (doc/physics.md#snider): profiles, checks and plots.
 
     /usr/bin/python3 -m rmf.snider check CASE [--plot FILE.png]
     /usr/bin/python3 -m rmf.snider compare CASE_A CASE_B [--time T]
 
 `check` extracts the layer-averaged solid volume fraction alpha(z) (the
 mean of alpha.grains over the cells of each horizontal layer) at the times
-of doc/physics.md 7.1, plots them, and applies the checks below, printing
+of doc/physics.md#snider, plots them, and applies the checks below, printing
 PASS/FAIL with the measured figure; the exit status is non-zero on a
 failure.  `compare` checks that two runs of the case (serial and
 decomposed) give the same alpha(z).
@@ -20,7 +20,7 @@ Tolerances and where they come from:
 - settled bed at 0.6 s: the mean of alpha(z) over the layers below
   0.14 m is alphaPacked = 0.6 within BED_TOL = 0.02; the layers above
   0.16 m hold alpha < 0.01 (clear top).
-- over-packing (doc/physics.md 5.3), at every written time from 0.1 s:
+- over-packing (doc/physics.md#mppic), at every written time from 0.1 s:
   the layer-averaged alpha(z) stays at or below LAYER_MAX_BOUND = 0.63
   (alphaPacked + 0.03), and the averaged volume fraction the packing
   model acts on (alphaAverage.grains, cell values, written by the
@@ -68,7 +68,7 @@ Tolerances and where they come from:
   12.99, 12.91 mm for e = 0.85 and 12.90, 12.86, 12.68, 12.96 mm for
   e = 0.5 (seeds 0 to 3).  A single pair compared at 0.2 s, the check
   until then, passed or failed with the realisation.
-- free fall (free_fall; doc/physics.md 5.3.1): before the bed reaches
+- free fall (free_fall; doc/physics.md#two-sided): before the bed reaches
   it the suspension falls freely, every grain at g t.  The parcels' mean
   vertical velocity in the band FREE_FALL_MARGIN (two layers, 15 mm)
   above the ideal bed front and below the ideal top of the column
@@ -260,7 +260,7 @@ def quarter_layers(case, time, first=2, last=15):
     """alpha of the parcels on the four quarter-layer slabs of a cell
     layer, each the mean over the layers first to last - 1 (the settled
     bed away from the floor and the surface; uniform layers assumed):
-    how the bed's parcels sit within its cells (doc/physics.md 5.3.1)."""
+    how the bed's parcels sit within its cells (doc/physics.md#two-sided)."""
     heights, _ = layers(case)
     dz = heights[1] - heights[0]
     edges = np.linspace(first*dz, last*dz, 4*(last - first) + 1)
@@ -427,7 +427,7 @@ def check(case, end="0.6", cell_bound=True, heated=False, layer_bound=None):
     s["alphaMaxFaceLayer"] = face_layers_max(case, bounded)
     print(f"info  max alpha from {BOUNDS_FROM} s on slabs of a layer's height"
           f" centred on the faces between layers {s['alphaMaxFaceLayer']:.3f}"
-          " (doc/physics.md 5.3.1)")
+          " (doc/physics.md#two-sided)")
     averaged = [s["alphaMaxAveraged"][t] for t in bounded
                 if s["alphaMaxAveraged"][t] is not None]
     amax = max(averaged) if averaged else None

@@ -18,7 +18,7 @@ Checks (physical, each able to fail):
 
       dv/dt = (3/4) C_D rho_g (U - v)^2/(rho_p d),   m_p c_p dT_p/dt = Q,
 
-  C_D and Q the free-molecular sphere's (doc/physics.md 4.2) for the
+  C_D and Q the free-molecular sphere's (doc/physics.md#one-way) for the
   free-molecular models (oneWay, twoWayDirect, twoWayIndirect, adaptive:
   Kn_p = lambda/d ~ 3800 >> KnSwitch) and Loth's drag and Nusselt heat
   (4.5; mu from the VHS law at 1000 K) for Loth.  T_p(t) enters C_D

@@ -62,7 +62,7 @@ Checks (each able to fail):
   stream (the isotropy's draws) was seeded with the processor number
   only, so serial seeds redrew the same kicks and spread 1.1 % in the
   push against 6.8 % between 2-rank seeds; it is now seeded from the
-  grains' randomSeed (doc/physics.md 1.1).
+  grains' randomSeed (doc/physics.md#random-streams).
 - The summary: rmf.psi's table at the last time against the real grains,
   largest alpha and grain temperatures read from the files here.
 - ParaView opens the serial run (rmf.pvcheck).

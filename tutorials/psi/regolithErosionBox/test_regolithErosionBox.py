@@ -48,7 +48,7 @@ Checks (each able to fail):
 The collisionless variant, reduced (0.1 s of plume from the same settled
 bed, about 20 s more): Berger's collisionless box by our rule (the grains
 the gas has reached stop touching each other; erosionPlanes'
-collisionless, doc/physics.md 7.3).  Checks:
+collisionless, doc/physics.md#erosion-box).  Checks:
 - The rule: no grain above the erosion plane touches another grain, at
   the end of any step nor at any contact step (Berger's count, zero at
   every step), (every such grain has been reached; the grains it could

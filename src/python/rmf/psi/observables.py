@@ -1,7 +1,7 @@
 # rarefiedMultiphaseFoam. Copyright (C) 2026 The rarefiedMultiphaseFoam authors
 # SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
-"""Plume-surface interaction observables: the computations (doc/physics.md
-7.2), on a case or on arrays; rmf.psi re-exports them.
+"""Plume-surface interaction observables: the computations (doc/physics.md#apollo-psi),
+on a case or on arrays; rmf.psi re-exports them.
 
 Case (the tutorial tutorials/psi/apolloScaledPSI): a wedge about the x
 axis, y radial; nozzle exit at x = 0, the plume flows in +x onto the wall
@@ -105,7 +105,7 @@ Observables, each a function of this module:
 9. Validity of binary collisions (binary_validity): the real-grain
    fraction of the parcels in cells whose alpha.grains exceeds alphaValid
    (0.1, NTCHardSphere's default: above it a grain is no longer free
-   between binary collisions, doc/physics.md 5.2), over all parcels.
+   between binary collisions, doc/physics.md#ntc), over all parcels.
 10. Grains out of the free-molecular regime (transitional): the parcels in
    cells with 0 < Kn_p < KnSwitch (10, the adaptive coupling's default):
    their real-grain fraction and mean temperature.
@@ -170,7 +170,7 @@ def parcels(case, time, cloud=CLOUD, radial_weight=None):
     or None when the time has no parcel of the cloud.  n: real grains per
     parcel, nParticle; times RWF(r) = 1 + (W - 1) r/R when radial_weight =
     (W, R) is given (parcels weighted by radius implicitly, as the gas's
-    simulators: doc/physics.md 6)."""
+    simulators: doc/physics.md#axisymmetric)."""
     base = os.path.join(case, time, "lagrangian", cloud)
     if not os.path.exists(os.path.join(base, "positions")):
         return None
