@@ -5,4 +5,5 @@
 PYTHONPATH), and the code tests, benchmarks and scripts share: rmf.foam
 (files, runs, logs), rmf.figures (saving a figure), rmf.kinetic (the
 drag and heat references), rmf.bench (the speed-accuracy study), rmf.stats,
-rmf.dem; test support lives in testing/ at the top level."""
+rmf.dem, rmf.keywords (the keyword tables of the model pages in
+doc/models); test support lives in testing/ at the top level."""
