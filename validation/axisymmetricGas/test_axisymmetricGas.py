@@ -331,8 +331,8 @@ def _collisionless(name, outer, ends, steps):
 def test_specular_wedge():
     """Simulators moving fast azimuthally along a specular outer wall, and
     into its corners with the specular end walls, used to hang the run
-    (doc/physics.md#axisymmetric: each reflection advanced them by a few ulps).  The
-    closed unweighted wedge with specular walls and no collisions runs 40
+    (doc/physics.md#axisymmetric: each reflection advanced them by a few ulps).
+    The closed unweighted wedge with specular walls and no collisions runs 40
     steps; specular reflection and the turn into the plane keep every
     speed, so the simulators' kinetic energy stays as it was (to 1e-12
     relative: round-off), none is lost and all stay in the wedge (r at most
@@ -357,9 +357,9 @@ def test_specular_wedge():
 
 def test_wedge_walk_exact():
     """The axisymmetric mode's Cartesian move (tracking cartesian, wedgeWalk,
-    doc/physics.md#cartesian-move) ends each path at its analytic end.  The unweighted
-    wedge with every boundary open (no walls, no inflow) and no collisions
-    moves its 15 000 simulators WALK_STEPS = 10 steps of 5 us (a most
+    doc/physics.md#cartesian-move) ends each path at its analytic end.  The
+    unweighted wedge with every boundary open (no walls, no inflow) and no
+    collisions moves its 15 000 simulators WALK_STEPS = 10 steps of 5 us (a most
     probable speed crosses 3.5 cells); a simulator still in then ended on
     the straight 3-D line from its start's image (x, y, 0) with its first
     velocity, rotated into the plane: x = x0 + T u, r = |(y0 + T v_y, T v_z)|,

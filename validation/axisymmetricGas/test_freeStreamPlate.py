@@ -1,7 +1,7 @@
 # rarefiedMultiphaseFoam. Copyright (C) 2026 The rarefiedMultiphaseFoam authors
 # SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
-"""Axisymmetric gas against a 3-D sector, and on 2 MPI ranks (doc/physics.md#axisymmetric
-and #verification).
+"""Axisymmetric gas against a 3-D sector, and on 2 MPI ranks
+(doc/physics.md#axisymmetric and #verification).
 
 Case freeStreamPlate: an argon free stream (1e20 m^-3, 300 K, 1000 m/s
 along +x: Mach 3.1) enters through the inlet x = 0 and through the outer

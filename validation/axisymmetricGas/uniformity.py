@@ -115,8 +115,8 @@ def weighting_events(max_weight, extent, radius, dt, temperature, mass,
     ratio = RWF(r0)/RWF(r1): kept with probability ratio below 1, else
     floor(ratio) copies and one more with the fractional part's
     probability; the expected events are |ratio - 1| either way (doc/
-    physics.md#axisymmetric).  Simulators sit at density n/(F_N RWF(r)) in the wedge
-    (volume element ~ r dr), velocities Maxwellian at temperature.  The
+    physics.md#axisymmetric).  Simulators sit at density n/(F_N RWF(r)) in the
+    wedge (volume element ~ r dr), velocities Maxwellian at temperature.  The
     outer wall (radius: the flat outer face's distance from the axis) re-
     emits diffusely for the rest of the step; open, a simulator crossing it
     leaves undecided, and one inserted there (weight 1, inward velocity

@@ -47,10 +47,10 @@ turned back into the meridional plane, and are weighted radially.
    validation/axisymmetricGas, maxRadialWeight 10 for the gas and the
    grains), interphaseCoupling oneWay, 1000 steps of 5 us.  Their heating
    rate in each fifth of the radius is the free-molecular
-   pi R^2 n <c> 2 k (T_g - T_p)/(m_p c_p) (doc/physics.md#one-way, eps 0, alpha_T 1;
-   validation/freeMolecularCoupling) within 2 % (that test's tolerance):
-   a sum without the gas's weight factor gives up to RWF = 10 times less
-   at the outer radius.
+   pi R^2 n <c> 2 k (T_g - T_p)/(m_p c_p) (doc/physics.md#one-way, eps 0,
+   alpha_T 1; validation/freeMolecularCoupling) within 2 % (that test's
+   tolerance): a sum without the gas's weight factor gives up to RWF = 10 times
+   less at the outer radius.
    With n and T_g set to the start's 1e20 m^-3 and 300 K the grains heat
    0.5-0.6 % less, at 4-10 of the grains' standard errors.  The cause is
    the gas, not the coupling: with radial weights the wedge's real
@@ -163,7 +163,8 @@ def _walk(case, max_weight, steps, dt):
     (W RWF(r_k+1))^2 f (1 - f), f the fractional part of the ratio, and
     |ratio - 1| events are expected.  The total is a martingale, so its
     variance is the sum of c_k times those over paths and steps (exact
-    for the ideal paths; the code's grazing-wall slide, doc/physics.md#axisymmetric,
+    for the ideal paths; the code's grazing-wall slide,
+    doc/physics.md#axisymmetric,
     departs from them for parcels on the outer wall)."""
     t0 = os.path.join(case, "0", "lagrangian", "grains")
     y = foam.read_positions(os.path.join(t0, "positions"))[:, 1]

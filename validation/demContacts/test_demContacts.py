@@ -2,8 +2,8 @@
 # SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
 """Soft-sphere DEM contacts: verification of pairLinearSpringDashpot and
 wallLinearSpringDashpot under pairCollision, and of the same contacts
-under cartesianContacts (doc/physics.md#dem, #cartesian-contacts), end to end on the
-solver with the demSolidCloud (case box/: a walled cube of 10 mm, no
+under cartesianContacts (doc/physics.md#dem, #cartesian-contacts), end to end on
+the solver with the demSolidCloud (case box/: a walled cube of 10 mm, no
 gas).  Each check runs with both collision models ("pair": a case step
 per contact step; "cartesian": case steps of PER_STEP = 10 contact steps
 of the same length), but the processor boundary (pairCollision only) and

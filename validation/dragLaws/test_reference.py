@@ -33,8 +33,8 @@ def test_header_matches_script():
 
 
 def test_integral_matches_closed_form():
-    """The surface integral (the reference) and doc/physics.md#one-way's closed form
-    agree to 1e-11 (Simpson with 4000 intervals; at s = 0.01 the closed
+    """The surface integral (the reference) and doc/physics.md#one-way's closed
+    form agree to 1e-11 (Simpson with 4000 intervals; at s = 0.01 the closed
     form loses ~3 digits to cancellation in double precision)."""
     worst = 0.0
     for s, ratio in reference.FM_POINTS:

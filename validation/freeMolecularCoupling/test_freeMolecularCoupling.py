@@ -43,8 +43,8 @@ the bound is Student's t_9 sigma).
    eps = 0.1, alpha_T = 0.9 (so that the factor (1 - eps) alpha_T = 0.81
    is exercised), for argon (zeta = 0) and nitrogen (zeta = 2, Larsen-
    Borgnakke exchange keeps its rotational energy in equilibrium).  The
-   expectation of doc/physics.md#one-way's Q over a Maxwellian at rest with number
-   density n (the sum (W_g/V) sum_j becomes n E[.]): with w the molecular
+   expectation of doc/physics.md#one-way's Q over a Maxwellian at rest with
+   number density n (the sum (W_g/V) sum_j becomes n E[.]): with w the molecular
    velocity, E|w| = <c> = sqrt(8 k T_g/(pi m)), E[|w| m |w|^2/2] =
    2 k T_g <c> (the flux-weighted mean translational energy) and
    E[|w| E_int] = <c> <E_int> (independent of the velocity), so

@@ -1,7 +1,8 @@
 # rarefiedMultiphaseFoam. Copyright (C) 2026 The rarefiedMultiphaseFoam authors
 # SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
-"""The grains' Cartesian tracking (tracking cartesian, doc/physics.md#grain-tracking)
-follows upstream's barycentric tracking to round-off.
+"""The grains' Cartesian tracking (tracking cartesian,
+doc/physics.md#grain-tracking) follows upstream's barycentric tracking to
+round-off.
 
 A reduced copy of the Snider sedimentation set-up (20 000 parcels, MPPIC
 as the tutorial has it: twoSided packing, relaxation damping, walls

@@ -223,8 +223,8 @@ def test_variants_picture(variant_results):
 
 
 def test_stochastic_overpacks(variant_results):
-    """doc/physics.md#snider: NTC collisions alone know only binary collisions and
-    let the bed pack beyond what MPPIC's stress allows: its bottom layer
+    """doc/physics.md#snider: NTC collisions alone know only binary collisions
+    and let the bed pack beyond what MPPIC's stress allows: its bottom layer
     exceeds the layer bound that the MPPIC run keeps, parcels conserved."""
     passed, s = variant_results[0]["stochastic"]
     checks = s["checks"]

@@ -1,9 +1,9 @@
 # rarefiedMultiphaseFoam. Copyright (C) 2026 The rarefiedMultiphaseFoam authors
 # SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
 """Two-way free-molecular coupling, interphaseCoupling twoWayDirect and
-twoWayIndirect (doc/physics.md#two-way-direct, #two-way-indirect and #verification's
-"thermal and momentum relaxation of gas + dust in a closed periodic box"),
-end to end on the solver.
+twoWayIndirect (doc/physics.md#two-way-direct, #two-way-indirect
+and #verification's "thermal and momentum relaxation of gas + dust in a closed
+periodic box"), end to end on the solver.
 
 Case: validation/freeMolecularCoupling/box (one cell, 0.1 x 0.08 x 0.08 m,
 periodic in every direction: nothing enters or leaves, NTC conserves

@@ -1,7 +1,7 @@
 # rarefiedMultiphaseFoam. Copyright (C) 2026 The rarefiedMultiphaseFoam authors
 # SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
-"""Vibrational energy (doc/physics.md#vibration) in the one-cell periodic gas box
-of validation/freeMolecularCoupling (testing/rmf_box.py), with the quantum
+"""Vibrational energy (doc/physics.md#vibration) in the one-cell periodic gas
+box of validation/freeMolecularCoupling (testing/rmf_box.py), with the quantum
 Larsen-Borgnakke exchange of LarsenBorgnakkeVariableSoftSphere (alpha 1:
 VHS scattering).
 

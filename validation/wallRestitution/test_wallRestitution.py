@@ -73,7 +73,8 @@ def make_case(e):
 def parcels(case, time):
     """Positions and velocities at time, in the order of the parcels'
     identities (origId; one processor): the cloud re-orders its parcels
-    by cell (doc/physics.md#memory-order), so a parcel's place in the list changes
+    by cell (doc/physics.md#memory-order), so a parcel's place in the list
+    changes
     from one write to the next."""
     path = os.path.join(case, time, "lagrangian", "grains")
     x = foam.read_positions(os.path.join(path, "positions"))

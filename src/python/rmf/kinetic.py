@@ -94,9 +94,10 @@ def speed_moments(s):
 
 
 def heat_fm(s, tp_by_tg):
-    """Free-molecular heat of a fully accommodating sphere (doc/physics.md#one-way)
-    over pi R^2 n k T_g c_m: the molecules that strike it bring their
-    kinetic energy in its frame, E|w|^3 m/2 = k T_g c_m E|w/c_m|^3, and
+    """Free-molecular heat of a fully accommodating sphere
+    (doc/physics.md#one-way) over pi R^2 n k T_g c_m: the molecules that strike
+    it bring their kinetic energy in its frame, E|w|^3 m/2 = k T_g c_m
+    E|w/c_m|^3, and
     leave with 2 k T_p each."""
     m1, m3 = speed_moments(s)
     return m3 - 2*tp_by_tg*m1
@@ -169,7 +170,8 @@ def analytic_grain(gas, grain, t_end, law="freeMolecular", n=2000):
     each.  law "Loth": loth_cd's Loth C_D(Re, Ma, gamma, T_p/T_g) and
     Nusselt heat Q = Nu pi d kappa (T_g - T_p) (doc/physics.md#loth; alpha_T
     1, Eucken's Pr 2/3, kappa = mu c_p,g/Pr), mu the VHS law's at T_g
-    (gas's d, omega, Tref: doc/physics.md#cell-averages), as the solver's gas dsmc
+    (gas's d, omega, Tref: doc/physics.md#cell-averages), as the solver's gas
+    dsmc
     takes it from the cell's averaged temperature."""
     m, nd, Tg, U = gas["m"], gas["n"], gas["T"], gas["U"]
     d, rho_p, cp = grain["d"], grain["rho"], grain["cp"]

@@ -1,7 +1,7 @@
 # rarefiedMultiphaseFoam. Copyright (C) 2026 The rarefiedMultiphaseFoam authors
 # SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
-"""Plume-surface interaction observables: the computations (doc/physics.md#apollo-psi),
-on a case or on arrays; rmf.psi re-exports them.
+"""Plume-surface interaction observables: the computations
+(doc/physics.md#apollo-psi), on a case or on arrays; rmf.psi re-exports them.
 
 Case (the tutorial tutorials/psi/apolloScaledPSI): a wedge about the x
 axis, y radial; nozzle exit at x = 0, the plume flows in +x onto the wall
