@@ -1,6 +1,6 @@
 # rarefiedMultiphaseFoam. Copyright (C) 2026 The rarefiedMultiphaseFoam authors
 # SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
-"""Every bad keyword caught (issue 18 item 4), from the list the code
+"""Every bad keyword caught, from the list the code
 checks, and a bounded fuzz of the grain and coupling dictionaries.
 
 The list.  Both programs take -listKeywords: they read and check a case's

@@ -260,7 +260,7 @@ def binary_impact(name, e, dt, contacts, v0=0.1, k=KN, entries=()):
 @pytest.mark.parametrize("contacts", CONTACTS)
 @pytest.mark.parametrize("factor", [2, 10])
 def test_binary_impact_long_step(factor, contacts):
-    """Stability at the extremes (issue 17's matrix): the step at 2x and
+    """Stability at the extremes (doc/speed-accuracy.md): the step at 2x and
     10x the DEM's limit t_c/50 (pairCollision: deltaT = t_c/25 and t_c/5,
     the largest it accepts; cartesianContacts: stepsPerContact 25 and 5,
     its smallest).  Expected: at 2x no warning, e and t_c within the 1 %
@@ -309,7 +309,7 @@ def peak_overlap(e, w0, m_eff, k):
 @pytest.mark.parametrize("contacts", CONTACTS)
 @pytest.mark.parametrize("springs,k,v0", [("Berger", KN, 0.1), ("soft", KN/100, 0.5)])
 def test_overlap_guard(springs, k, v0, contacts):
-    """Stability at the extremes (issue 17's matrix): the overlap guard.
+    """Stability at the extremes (doc/speed-accuracy.md): the overlap guard.
     The binary impact at t_c/50 with Berger's springs at 0.1 m/s and with
     springs 100 times softer (the usual shortcut) at 0.5 m/s.  Expected:
     the logged largest overlap over the radius equals the damped

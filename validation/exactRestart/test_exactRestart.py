@@ -1,6 +1,6 @@
 # rarefiedMultiphaseFoam. Copyright (C) 2026 The rarefiedMultiphaseFoam authors
 # SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
-"""Exact restart (issue 18 item 1): N steps, a restart from the written
+"""Exact restart: N steps, a restart from the written
 state, N more steps is byte for byte the run of 2N steps without a stop.
 
 Per model family (testing/rmf_families.py), a small case is meshed and

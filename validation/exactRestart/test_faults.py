@@ -1,6 +1,6 @@
 # rarefiedMultiphaseFoam. Copyright (C) 2026 The rarefiedMultiphaseFoam authors
 # SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
-"""Faults while writing (issue 18 item 2; doc/physics.md#restart, "Faults").
+"""Faults while writing (doc/physics.md#restart, "Faults").
 
 The gas family of testing/rmf_families.py (dsmcFoam's freeSpacePeriodic, own
 stream, writeFormat binary, about 40 000 simulators) is run to N steps;

@@ -1,6 +1,6 @@
 # rarefiedMultiphaseFoam. Copyright (C) 2026 The rarefiedMultiphaseFoam authors
 # SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
-"""Free-molecular gas-grain coupling, interphaseCoupling oneWay (items 2 and 7; doc/physics.md#one-way): the force and heat the DSMC gas gives a
+"""Free-molecular gas-grain coupling, interphaseCoupling oneWay (doc/physics.md#one-way): the force and heat the DSMC gas gives a
 grain held in it, against the analytic free-molecular values, end to end
 on the solver.
 

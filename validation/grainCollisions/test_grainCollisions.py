@@ -424,7 +424,7 @@ def test_haff_cooling(e, steps):
 
 
 def test_totally_inelastic():
-    """Stability at the extreme e = 0 (issue 17's matrix): every accepted
+    """Stability at the extreme e = 0 (doc/speed-accuracy.md): every accepted
     pair leaves with its centre-of-mass velocity.  Expected: the model
     stays stable (no NaN, theta falls at every step and stays positive),
     kinetic energy lost equals heat gained and momentum is conserved to
@@ -641,7 +641,7 @@ GUARD = re.compile(r"NTCHardSphere: collisions per parcel per step since the las
 
 @pytest.mark.parametrize("factor", [0.5, 2, 10])
 def test_step_guard(factor):
-    """Stability at the extremes (issue 17's matrix: deltaT at 1x, 2x and
+    """Stability at the extremes (doc/speed-accuracy.md: deltaT at 1x, 2x and
     10x the model's limit).  The limit of NTC grains is their mean time
     between collisions, 1/nu with nu = n sigma <c_r> (7.05 ms here);
     deltaT = factor/nu.  The guard logs at every write the largest

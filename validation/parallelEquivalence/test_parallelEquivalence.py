@@ -1,7 +1,7 @@
 # rarefiedMultiphaseFoam. Copyright (C) 2026 The rarefiedMultiphaseFoam authors
 # SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
 """Serial against 2 ranks, statistically, for every model family and every
-decomposition method (issue 18 item 3).
+decomposition method.
 
 The families are exact restart's (testing/rmf_families.py): gas alone;
 grains with MPPIC, hybrid MPPIC/NTC, NTC hard spheres and DEM; the

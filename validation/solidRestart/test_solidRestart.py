@@ -1,7 +1,7 @@
 # rarefiedMultiphaseFoam. Copyright (C) 2026 The rarefiedMultiphaseFoam authors
 # SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
 """Solid parcels survive a restart with every property,
-and zonalGravity switches gravity off inside a cellZone (item 5).
+and zonalGravity switches gravity off inside a cellZone.
 
 A dilute copy of the Snider set-up (2000 parcels, alpha ~ 0.004) falls
 freely in vacuum with every MPPIC model off: run to 2 ms, stop, restart

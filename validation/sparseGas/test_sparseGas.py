@@ -1,7 +1,7 @@
 # rarefiedMultiphaseFoam. Copyright (C) 2026 The rarefiedMultiphaseFoam authors
 # SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
-"""The stability matrix's "one simulator per cell" (issue 17 item 5;
-doc/speed-accuracy.md, "Stability at the extremes"), end to end on the
+"""The stability matrix's "one simulator per cell"
+(doc/speed-accuracy.md, "Stability at the extremes"), end to end on the
 solver.
 
 Case: stock dsmcFoam's freeSpacePeriodic tutorial (N2 + O2, 300 K,

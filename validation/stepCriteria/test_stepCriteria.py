@@ -211,8 +211,8 @@ def largest_probability(candidates, omega=0.74, T_ref=273.0):
 
 
 def test_majorant_excess():
-    """The gas's NTC guard (issue 17's "NTC acceptance probability above
-    1"): upstream's collisions draw a cell's candidates from its majorant
+    """The gas's NTC guard (the stability matrix's "NTC acceptance
+    probability above 1", doc/speed-accuracy.md): upstream's collisions draw a cell's candidates from its majorant
     (sigma c_r)_max and accept sigma c_r/(sigma c_r)_max; a candidate
     above it is accepted once though it stood for more collisions, and
     raises the majorant for the next step.  The gas logs, at every write,
