@@ -2,7 +2,7 @@
 # rarefiedMultiphaseFoam. Copyright (C) 2026 The rarefiedMultiphaseFoam authors
 # SPDX-License-Identifier: GPL-3.0-or-later (the licence is in COPYING)
 """Speed-up of the dense PSI demo on 2 ranks, split by cell count and by
-measured cost, against the serial run (doc/physics.md 1.5).
+measured cost, against the serial run (doc/physics.md#load-balance).
 
 Case: tutorials/psi/apolloScaledPSI, `-variant hybrid -settings demo` (the
 dense demo of issue 16's target; the main job runs `-settings crater`), to

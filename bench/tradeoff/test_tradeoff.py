@@ -61,7 +61,7 @@ settling:
   parcel count alone is 4.2 %, so a wrong bed height or level shows
   above it: one slab of 7.5 mm too high or low adds sqrt(1/40) = 16 %);
 - dual and cachedDual averaging give the same run (cachedDual caches
-  dual's volumes, doc/physics.md 5.4): the same errors to the last bit;
+  dual's volumes, doc/physics.md#dem): the same errors to the last bit;
 - sixteen times fewer parcels are further from the ideal (a packed slab
   then holds 36 parcels: Poisson scatter 17 %; measured 39.6 %).
 """

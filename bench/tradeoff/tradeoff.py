@@ -14,7 +14,7 @@ tradeoff.md; --doc also puts the report and the picture
 (doc/speed-accuracy-<scene>.png) into doc/speed-accuracy.md, between the
 scene's markers.  Scenes so far:
 
-erosionBox (tutorials/psi/regolithErosionBox, doc/physics.md 7.3)
+erosionBox (tutorials/psi/regolithErosionBox, doc/physics.md#erosion-box)
     Reference: DEM with contacts resolved in t_c/50 steps (Berger's
     setting; the contacts' restitution and duration are within 0.02 % of
     the analytic ones there, validation/demContacts).  Settings: DEM at
@@ -40,7 +40,7 @@ erosionBox (tutorials/psi/regolithErosionBox, doc/physics.md 7.3)
 dustCloudStream (tutorials/coupling/dustCloudStream)
     Reference: analytic.  The grains are 0.5 um in an argon stream whose
     mean free path is 3800 grain diameters, so the free-molecular drag and
-    heat of a fully accommodating sphere (doc/physics.md 4.2) are the
+    heat of a fully accommodating sphere (doc/physics.md#one-way) are the
     physics; integrated by RK4 in the nominal stream from rest at T_0
     (rmf.kinetic.analytic_grain).  Settings: each interphaseCoupling type
     (none, oneWay, twoWayDirect, twoWayIndirect, adaptive, Loth) at the
@@ -54,7 +54,7 @@ dustCloudStream (tutorials/coupling/dustCloudStream)
     Full size: 0.5 ms, 3 seeds (12 minutes); --quick: 0.1 ms, 1 seed
     (2 minutes).
 
-snider (tutorials/solids/sniderSedimentation, doc/physics.md 7.1)
+snider (tutorials/solids/sniderSedimentation, doc/physics.md#snider)
     The narrow column (rmf.snider.narrow_column: 4 x 4 of the tutorial's
     cells, its fill and parcel weight).  Reference: analytic, the ideal
     settling (rmf.snider.free_fall_bed: free fall onto a bed that packs

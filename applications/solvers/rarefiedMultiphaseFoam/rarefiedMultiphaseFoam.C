@@ -12,16 +12,17 @@ Group
 Description
     Transient solver for rarefied gas flows (DSMC) carrying solid grains
     (Lagrangian parcels).  The phases, their coupling and the order of a
-    step belong to rarefiedMultiphaseSystem (doc/physics.md section 1): a
+    step belong to rarefiedMultiphaseSystem (doc/physics.md#step): a
     dsmcFoam case runs unchanged, grains run alone in vacuum, or both
     together.  The grain cloud is constant/<cloud>Properties (-cloud,
     default grains).  After each step a progress line gives the simulated
     time, the wall time used and an estimate of the wall time left.  A
     time directory whose write did not finish (a killed run, a full disk)
-    is set aside at the restart (writeGuard; doc/physics.md 1.4).  A
+    is set aside at the restart (writeGuard; doc/physics.md#restart).  A
     parallel run logs its load balance at every write, and may write the
-    cost per cell and stop to re-balance (loadBalance; doc/physics.md 1.5).
-    Memory the solver frees stays with it for the next step (heapReuse).
+    cost per cell and stop to re-balance (loadBalance;
+    doc/physics.md#load-balance).  Memory the solver frees stays with it for the
+    next step (heapReuse).
 
 \*---------------------------------------------------------------------------*/
 

@@ -8,7 +8,7 @@ Application
 
 Description
     Unit test of the drag, lift and heat-transfer laws (Foam::dragLaws,
-    librarefiedCoupling; doc/physics.md 4.2, 4.5): limits against laws
+    librarefiedCoupling; doc/physics.md#one-way, #loth): limits against laws
     published apart from Loth's (Stokes, free-molecular, Newton,
     Clift-Gauvin at Ma = 0, Cunningham-Davies slip, Saffman's shear lift,
     Nusselt continuum and free-molecular),
@@ -109,7 +109,7 @@ int main(int argc, char *argv[])
     const scalar nextBelow45 = std::nextafter(45.0, 0.0);
 
     // ---------------------------------------------------------------------
-    Info<< nl << "Free-molecular sphere C_D(s), doc/physics.md 4.2" << nl;
+    Info<< nl << "Free-molecular sphere C_D(s), doc/physics.md#one-way" << nl;
 
     // Reference: surface integral of the kinetic momentum flux (Simpson,
     // 4000 intervals), which matches the closed form to 2.4e-13 in Python
@@ -229,7 +229,7 @@ int main(int argc, char *argv[])
         lothCd(1e4, 1e-3, 1.4, 1), lothCd(1e4, 0, 1.4, 1), 1e-6
     );
 
-    // Clift-Gauvin at Ma = 0: C_M = 1.0000013, H_M = 0.99950 (doc/physics.md 4.5)
+    // Clift-Gauvin at Ma = 0: C_M = 1.0000013, H_M = 0.99950 (doc/physics.md#loth)
     for (const scalar Re : {45.0, 100.0, 1e3, 1e4, 1e5, 2e5})
     {
         const scalar cliftGauvin =

@@ -26,7 +26,7 @@ Description
 
     With loadBalance { cellCost yes; } in system/controlDict it also writes
     the field cellCost, uniform (nothing measured yet), for decomposePar's
-    weightField (loadBalance, doc/physics.md 1.5).
+    weightField (loadBalance, doc/physics.md#load-balance).
 
     Errors raised (FatalIOError, file/keyword/value/valid range): those of
     the fills; randomSeed outside [0, 2000]; an entry of regions that is
