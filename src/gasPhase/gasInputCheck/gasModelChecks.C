@@ -8,31 +8,10 @@
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-Foam::HashTable<Foam::gasModelChecks::checker>& Foam::gasModelChecks::checkers()
+namespace Foam
 {
-    // (built at the first registration, whatever the order of the static
-    // objects of the registration files)
-    static HashTable<checker> table;
-    return table;
-}
-
-
-Foam::wordHashSet& Foam::gasModelChecks::vibrating()
-{
-    static wordHashSet names;
-    return names;
-}
-
-
-Foam::gasModelChecks::add::add(const word& typeName, checker check)
-{
-    checkers().set(typeName, check);
-}
-
-
-Foam::gasModelChecks::addVibrating::addVibrating(const word& typeName)
-{
-    vibrating().insert(typeName);
+    defineNameRegistry(gasModelChecksTag, gasModelChecker);
+    defineNameRegistry(vibratingGasModelsTag, bool);
 }
 
 
@@ -43,23 +22,11 @@ void Foam::gasModelChecks::check
     const wordList& species
 )
 {
-    const auto iter = checkers().cfind(typeName);
-    if (iter.found())
+    const gasModelChecker* checker = find(typeName);
+    if (checker)
     {
-        (*iter.val())(dict, species);
+        (*checker)(dict, species);
     }
-}
-
-
-bool Foam::gasModelChecks::exchangesVibration(const word& typeName)
-{
-    return vibrating().found(typeName);
-}
-
-
-Foam::wordList Foam::gasModelChecks::vibratingModels()
-{
-    return vibrating().sortedToc();
 }
 
 

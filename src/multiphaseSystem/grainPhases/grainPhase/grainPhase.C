@@ -18,18 +18,9 @@ namespace Foam
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-Foam::HashTable<Foam::grainPhase::fillFunction>& Foam::grainPhase::fillTable()
+namespace Foam
 {
-    // (built at the first registration, whatever the order of the static
-    // objects)
-    static HashTable<fillFunction> table;
-    return table;
-}
-
-
-Foam::grainPhase::addFill::addFill(const word& kind, fillFunction fillKind)
-{
-    fillTable().set(kind, fillKind);
+    defineNameRegistry(grainPhase::fillsTag, grainPhase::fillFunction);
 }
 
 

@@ -68,7 +68,7 @@ void Foam::grainPhase::fill
         )
     );
 
-    (*fillTable()[kind])(cloudName, mesh, cloudProps, initDict);
+    (**fills::find(kind))(cloudName, mesh, cloudProps, initDict);
 }
 
 

@@ -7,6 +7,8 @@
 #include "SolidCloud.H"
 #include "cellExtent.H"
 #include "inputChecks.H"
+#include "keywordChecks.H"
+#include "solidModelChecks.H"
 #include "randomStreams.H"
 #include "restartState.H"
 #include "cellFields.H"
@@ -15,19 +17,11 @@
 #include "IsotropyModel.H"
 #include "PatchInteractionModel.H"
 #include "StochasticCollisionModel.H"
-#include "NTCHardSphere.H"
-#include "TwoSided.H"
-#include "ParticleStressModel.H"
-#include "TimeScaleModel.H"
 #include "AveragingMethod.H"
 #include "MPPICCloud.H"
 #include "CollidingCloud.H"
 #include "CollisionModel.H"
-#include "PairModel.H"
-#include "WallModel.H"
-#include "PairLinearSpringDashpot.H"
-#include "WallLinearSpringDashpot.H"
-#include "CartesianContacts.H"
+#include "subSteppedCollision.H"
 
 // * * * * * * * * * * * * * * * Input checks  * * * * * * * * * * * * * * * //
 
@@ -38,46 +32,18 @@ namespace solidCloudChecks
 
 using namespace inputChecks;
 
-//- Stop unless 0 < value < 1
-inline void checkOpenUnit(const dictionary& dict, const word& keyword)
+//- The model of family Model that keyword of models selects: its name
+//  among the family's choices, then its checker (solidModelChecks), if it
+//  has one
+template<class Model>
+void checkSelected
+(
+    const dictionary& models,
+    const word& keyword,
+    const dictionary& props
+)
 {
-    getOpen(dict, keyword, 0, 1);
-}
-
-
-//- The particle stress model of an MPPIC coefficient dictionary
-inline void checkParticleStress(const dictionary& coeffs)
-{
-    const dictionary& dict = coeffs.subDict("particleStressModel");
-    const word type(modelName<ParticleStressModel>(dict, "type"));
-
-    checkOpenUnit(dict, "alphaPacked");
-
-    if (type == "HarrisCrighton")
-    {
-        getPositive(dict, "pSolid");
-        getNonNegative(dict, "beta");
-        getPositive(dict, "eps");
-    }
-}
-
-
-//- The time scale model of an MPPIC coefficient dictionary
-inline void checkTimeScale(const dictionary& coeffs)
-{
-    const dictionary& dict = coeffs.subDict("timeScaleModel");
-    modelName<TimeScaleModel>(dict, "type");
-
-    checkOpenUnit(dict, "alphaPacked");
-    getClosed(dict, "e", 0, 1);
-}
-
-
-//- Restitution and friction of one wall-interaction dictionary
-inline void checkRebound(const dictionary& dict)
-{
-    getClosedOrDefault(dict, "e", 0, 0, 1);
-    getClosedOrDefault(dict, "mu", 0, 0, 1);
+    solidModelChecks::check(modelName<Model>(models, keyword), models, props);
 }
 
 
@@ -87,58 +53,15 @@ void checkLayer(const dictionary& props, const MPPICCloud<CloudType>*)
 {
     typedef MPPICCloud<CloudType> mppicType;
 
-    const word averaging
+    modelName<AveragingMethod<scalar>>
     (
-        modelName<AveragingMethod<scalar>>
-        (
-            props.subDict("solution"), "averagingMethod"
-        )
+        props.subDict("solution"), "averagingMethod"
     );
 
     const dictionary& models = props.subDict("subModels");
-
-    const word packing
-    (
-        modelName<PackingModel<mppicType>>(models, "packingModel")
-    );
-    if (packing != "none")
-    {
-        checkParticleStress(models.subDict(packing + "Coeffs"));
-    }
-    if (packing == PackingModels::TwoSided<mppicType>::typeName)
-    {
-        PackingModels::TwoSided<mppicType>::checkCoeffs(models);
-    }
-
-    const word damping
-    (
-        modelName<DampingModel<mppicType>>(models, "dampingModel")
-    );
-    if (damping != "none")
-    {
-        checkTimeScale(models.subDict(damping + "Coeffs"));
-    }
-
-    const word isotropy
-    (
-        modelName<IsotropyModel<mppicType>>(models, "isotropyModel")
-    );
-    if (isotropy != "none")
-    {
-        checkTimeScale(models.subDict(isotropy + "Coeffs"));
-    }
-
-    // The stochastic isotropy models take exp(-dt/tau) of every component
-    // of the averages, the moment method's gradients too: a negative
-    // gradient overflows (found by validation/badKeywords' fuzz)
-    if (isotropy != "none" && averaging == "moment")
-    {
-        badValue
-        (
-            props.subDict("solution"), "averagingMethod", averaging,
-            "basic, dual or cachedDual with isotropyModel " + isotropy
-        );
-    }
+    checkSelected<PackingModel<mppicType>>(models, "packingModel", props);
+    checkSelected<DampingModel<mppicType>>(models, "dampingModel", props);
+    checkSelected<IsotropyModel<mppicType>>(models, "isotropyModel", props);
 }
 
 
@@ -157,35 +80,10 @@ void checkLayer(const dictionary& props, const CollidingCloud<CloudType>*)
         );
     }
 
-    const dictionary& models = props.subDict("subModels");
-    const word collision
+    checkSelected<CollisionModel<collidingType>>
     (
-        modelName<CollisionModel<collidingType>>(models, "collisionModel")
+        props.subDict("subModels"), "collisionModel", props
     );
-    if (collision != "pairCollision")
-    {
-        return;
-    }
-
-    const dictionary& coeffs = models.subDict("pairCollisionCoeffs");
-    getPositive(coeffs, "maxInteractionDistance");
-
-    // Upstream takes the walls' velocity from this field, which must
-    // exist; ours is the carrier's, and our wall model holds walls at rest
-    // (U.gas: the solver's carrier velocity field; walls are at rest)
-    getChoice(coeffs, "U", {"U.gas"});
-
-    const word pair(modelName<PairModel<collidingType>>(coeffs, "pairModel"));
-    if (pair == PairLinearSpringDashpot<collidingType>::typeName)
-    {
-        linearContact(coeffs.subDict(pair + "Coeffs"));
-    }
-
-    const word wall(modelName<WallModel<collidingType>>(coeffs, "wallModel"));
-    if (wall == WallLinearSpringDashpot<collidingType>::typeName)
-    {
-        linearContact(coeffs.subDict(wall + "Coeffs"));
-    }
 }
 
 } // End namespace solidCloudChecks
@@ -222,17 +120,10 @@ const Foam::word& Foam::SolidCloud<CloudType>::checkInput
     // The layer below ours: MPPIC or colliding
     checkLayer(props, static_cast<const CloudType*>(nullptr));
 
-    const word collisions
+    checkSelected<StochasticCollisionModel<kinematicType>>
     (
-        modelName<StochasticCollisionModel<kinematicType>>
-        (
-            models, "stochasticCollisionModel"
-        )
+        models, "stochasticCollisionModel", props
     );
-    if (collisions == NTCHardSphere<kinematicType>::typeName)
-    {
-        NTCHardSphere<kinematicType>::checkCoeffs(models);
-    }
 
     // Upstream's drag forces (sphereDrag, ErgunWenYuDrag, ...) act on the
     // carrier fields, which the coupling also acts through: both would
@@ -260,33 +151,10 @@ const Foam::word& Foam::SolidCloud<CloudType>::checkInput
         }
     }
 
-    const word walls
+    checkSelected<PatchInteractionModel<kinematicType>>
     (
-        modelName<PatchInteractionModel<kinematicType>>
-        (
-            models, "patchInteractionModel"
-        )
+        models, "patchInteractionModel", props
     );
-    if (walls == "localInteraction")
-    {
-        const dictionary& coeffs = models.subDict("localInteractionCoeffs");
-        const PtrList<entry> patches(coeffs.lookup("patches"));
-        for (const entry& e : patches)
-        {
-            if (e.isDict())
-            {
-                // Named after the file, for the message
-                dictionary patchDict(e.dict());
-                patchDict.name() =
-                    coeffs.name() + ".patches." + e.keyword();
-                checkRebound(patchDict);
-            }
-        }
-    }
-    else if (walls == "standardWallInteraction")
-    {
-        checkRebound(models.subDict("standardWallInteractionCoeffs"));
-    }
 
     // Misspellings where upstream's readers and ours share a dictionary
     // (upstream takes further keywords there: only near-misses stop)
@@ -377,8 +245,8 @@ bool ownMotion
 }
 
 
-//- The colliding layer moves as upstream's, but with cartesianContacts,
-//  whose step it is
+//- The colliding layer moves as upstream's, but with a sub-stepped
+//  collision model (cartesianContacts), whose step it is
 template<class CloudType, class TrackCloudType>
 bool ownMotion
 (
@@ -387,15 +255,14 @@ bool ownMotion
     typename TrackCloudType::parcelType::trackingData& td
 )
 {
-    typedef CartesianContacts<CollidingCloud<CloudType>> contactsType;
-
-    contactsType* contacts = dynamic_cast<contactsType*>(&layer.collision());
-    if (!contacts)
+    auto* stepped =
+        dynamic_cast<subSteppedCollision<TrackCloudType>*>(&layer.collision());
+    if (!stepped)
     {
         return false;
     }
 
-    contacts->advance(cloud, td);
+    stepped->advance(cloud, td);
     return true;
 }
 

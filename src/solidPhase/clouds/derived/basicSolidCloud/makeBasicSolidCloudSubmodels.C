@@ -35,6 +35,7 @@ Description
 #include "NTCHardSphere.H"
 #include "TwoSided.H"
 #include "RestartableStochastic.H"
+#include "solidModelChecks.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -56,6 +57,25 @@ makeCloudFunctionObjectType(ErosionPlanes, basicSolidCloud);
 makeStochasticCollisionModelType(NTCHardSphere, basicSolidCloud);
 makePackingModelType(TwoSided, basicSolidCloud);
 makeIsotropyModelType(RestartableStochastic, basicSolidCloud);
+
+// The checkers (solidModelChecks) of our models that read keywords
+static const Foam::solidModelChecks::add addNTCHardSphereCheck
+(
+    Foam::NTCHardSphere<kinematicCloudType>::typeName_(),
+    Foam::NTCHardSphere<kinematicCloudType>::check
+);
+
+static const Foam::solidModelChecks::add addTwoSidedCheck
+(
+    Foam::PackingModels::TwoSided<MPPICCloudType>::typeName_(),
+    Foam::PackingModels::TwoSided<MPPICCloudType>::check
+);
+
+static const Foam::solidModelChecks::add addRestartableStochasticCheck
+(
+    Foam::IsotropyModels::RestartableStochastic<MPPICCloudType>::typeName_(),
+    Foam::IsotropyModels::RestartableStochastic<MPPICCloudType>::check
+);
 
 
 // ************************************************************************* //

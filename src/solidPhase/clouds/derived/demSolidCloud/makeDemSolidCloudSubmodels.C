@@ -39,6 +39,7 @@ Description
 #include "PairLinearSpringDashpot.H"
 #include "WallLinearSpringDashpot.H"
 #include "CartesianContacts.H"
+#include "pairCollisionCheck.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -71,6 +72,38 @@ makeWallModelType(WallLinearSpringDashpot, demCollidingCloud);
 makeCollisionModelType(CartesianContacts, demSolidCloud);
 
 // cartesianContacts leaves out the contacts erosionPlanes turns off
+// The checkers (solidModelChecks) of upstream's pair collisions and of our
+// models that read keywords
+static const Foam::solidModelChecks::add addPairCollisionCheck
+(
+    Foam::PairCollision<Foam::demCollidingCloud>::typeName_(),
+    Foam::solidChecks::pairCollision<Foam::demCollidingCloud>
+);
+
+static const Foam::solidModelChecks::add addPairLinearSpringDashpotCheck
+(
+    Foam::PairLinearSpringDashpot<Foam::demCollidingCloud>::typeName_(),
+    Foam::solidChecks::linearContactModel
+    <
+        Foam::PairLinearSpringDashpot<Foam::demCollidingCloud>
+    >
+);
+
+static const Foam::solidModelChecks::add addWallLinearSpringDashpotCheck
+(
+    Foam::WallLinearSpringDashpot<Foam::demCollidingCloud>::typeName_(),
+    Foam::solidChecks::linearContactModel
+    <
+        Foam::WallLinearSpringDashpot<Foam::demCollidingCloud>
+    >
+);
+
+static const Foam::solidModelChecks::add addNTCHardSphereCheck
+(
+    Foam::NTCHardSphere<kinematicCloudType>::typeName_(),
+    Foam::NTCHardSphere<kinematicCloudType>::check
+);
+
 static const Foam::contactModels::add addContactsCartesianContacts
 (
     Foam::CartesianContacts<Foam::demCollidingCloud>::typeName_()

@@ -263,10 +263,10 @@ Foam::ErosionPlanes<CloudType>::ErosionPlanes
             "collisionModel", "none"
         )
     );
-    if (collisionless_ && !contactModels::honoursContactsOff(contacts))
+    if (collisionless_ && !contactModels::found(contacts))
     {
         std::string honouring;
-        for (const word& model : contactModels::honouring())
+        for (const word& model : contactModels::names())
         {
             honouring += (honouring.empty() ? "" : " ") + model;
         }

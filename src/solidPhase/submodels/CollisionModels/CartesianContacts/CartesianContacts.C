@@ -560,10 +560,9 @@ void Foam::CartesianContacts<CloudType>::collide()
 
 
 template<class CloudType>
-template<class TrackCloudType>
 void Foam::CartesianContacts<CloudType>::advance
 (
-    TrackCloudType& cloud,
+    SolidCloud<CloudType>& cloud,
     typename parcelType::trackingData& td
 )
 {

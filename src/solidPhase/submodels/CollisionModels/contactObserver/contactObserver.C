@@ -8,30 +8,9 @@
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-Foam::wordHashSet& Foam::contactModels::names()
+namespace Foam
 {
-    // (built at the first registration, whatever the order of the static
-    // objects)
-    static wordHashSet set;
-    return set;
-}
-
-
-Foam::contactModels::add::add(const word& typeName)
-{
-    names().insert(typeName);
-}
-
-
-bool Foam::contactModels::honoursContactsOff(const word& typeName)
-{
-    return names().found(typeName);
-}
-
-
-Foam::wordList Foam::contactModels::honouring()
-{
-    return names().sortedToc();
+    defineNameRegistry(contactModelsTag, bool);
 }
 
 

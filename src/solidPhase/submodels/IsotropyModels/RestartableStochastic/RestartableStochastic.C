@@ -5,8 +5,23 @@
 \*---------------------------------------------------------------------------*/
 
 #include "RestartableStochastic.H"
+#include "solidModelChecks.H"
 #include "TimeScaleModel.H"
 #include "cloudAverages.H"
+
+// * * * * * * * * * * * * * * * Input checks  * * * * * * * * * * * * * * * //
+
+template<class CloudType>
+void Foam::IsotropyModels::RestartableStochastic<CloudType>::check
+(
+    const dictionary& subModels,
+    const dictionary& cloudProperties
+)
+{
+    solidChecks::timeScale(subModels.subDict(typeName + "Coeffs"));
+    solidChecks::isotropyAveraging(cloudProperties, typeName);
+}
+
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 

@@ -7,6 +7,7 @@
 #include "TwoSided.H"
 #include "keywordChecks.H"
 #include "inputChecks.H"
+#include "solidModelChecks.H"
 #include "cellFields.H"
 #include "wallPolyPatch.H"
 #include "syncTools.H"
@@ -18,31 +19,59 @@
 // * * * * * * * * * * * * * * * Input checks  * * * * * * * * * * * * * * * //
 
 template<class CloudType>
-void Foam::PackingModels::TwoSided<CloudType>::checkCoeffs
+const Foam::dictionary&
+Foam::PackingModels::TwoSided<CloudType>::coeffs::known
 (
     const dictionary& subModels
 )
 {
-    const dictionary& coeffs = subModels.subDict(typeName + "Coeffs");
-
+    const dictionary& dict = subModels.subDict(typeName + "Coeffs");
     inputChecks::rejectUnknown
     (
-        coeffs,
+        dict,
         {
             "particleStressModel", "e", "alphaMin", "relief", "smoothing",
             "packedCells", "predictMean"
         }
     );
-    inputChecks::getClosed(coeffs, "e", 0, 1);
+    return dict;
+}
 
-    inputChecks::getIntervalOrDefault
+
+template<class CloudType>
+Foam::PackingModels::TwoSided<CloudType>::coeffs::coeffs
+(
+    const dictionary& subModels
+)
+:
+    dict(known(subModels)),
+    e(inputChecks::getClosed(dict, "e", 0, 1)),
+    alphaMin
     (
-        coeffs, "alphaMin", inputChecks::interval::open(0, 1), 1e-4
+        inputChecks::getIntervalOrDefault
+        (
+            dict, "alphaMin", inputChecks::interval::open(0, 1), 1e-4
+        )
+    ),
+    relief(inputChecks::getClosedOrDefault(dict, "relief", 0, 0, 1)),
+    smoothing(inputChecks::getClosedOrDefault(dict, "smoothing", 0, 0, 1)),
+    packedCells(inputChecks::getBoolOrDefault(dict, "packedCells", false)),
+    predictMean(inputChecks::getBoolOrDefault(dict, "predictMean", false))
+{}
+
+
+template<class CloudType>
+void Foam::PackingModels::TwoSided<CloudType>::check
+(
+    const dictionary& subModels,
+    const dictionary& cloudProperties
+)
+{
+    solidChecks::particleStress
+    (
+        subModels.subDict(typeName + "Coeffs"), cloudProperties
     );
-    inputChecks::getClosedOrDefault(coeffs, "relief", 0, 0, 1);
-    inputChecks::getClosedOrDefault(coeffs, "smoothing", 0, 0, 1);
-    inputChecks::getBoolOrDefault(coeffs, "packedCells", false);
-    inputChecks::getBoolOrDefault(coeffs, "predictMean", false);
+    coeffs{subModels};      // (read and checked, then dropped)
 }
 
 
@@ -258,25 +287,25 @@ Foam::PackingModels::TwoSided<CloudType>::TwoSided
     CloudType& owner
 )
 :
+    TwoSided(dict, owner, coeffs(dict))
+{}
+
+
+template<class CloudType>
+Foam::PackingModels::TwoSided<CloudType>::TwoSided
+(
+    const dictionary& dict,
+    CloudType& owner,
+    const coeffs& c
+)
+:
     PackingModel<CloudType>(dict, owner, typeName),
-    e_(this->coeffDict().template get<scalar>("e")),
-    alphaMin_
-    (
-        this->coeffDict().template getOrDefault<scalar>("alphaMin", 1e-4)
-    ),
-    relief_(this->coeffDict().template getOrDefault<scalar>("relief", 0)),
-    smoothing_
-    (
-        this->coeffDict().template getOrDefault<scalar>("smoothing", 0)
-    ),
-    packedCells_
-    (
-        inputChecks::getBoolOrDefault(this->coeffDict(), "packedCells", false)
-    ),
-    predict_
-    (
-        inputChecks::getBoolOrDefault(this->coeffDict(), "predictMean", false)
-    ),
+    e_(c.e),
+    alphaMin_(c.alphaMin),
+    relief_(c.relief),
+    smoothing_(c.smoothing),
+    packedCells_(c.packedCells),
+    predict_(c.predictMean),
     cellLength_(cbrt(owner.mesh().V().field())),
     volumeAverage_(nullptr),
     massAverage_(nullptr),
@@ -293,7 +322,6 @@ Foam::PackingModels::TwoSided<CloudType>::TwoSided
     started_(false),
     restart_(restartState::read(owner.mesh(), owner.name(), typeName))
 {
-    checkCoeffs(dict);
     findNeighbours();
 }
 

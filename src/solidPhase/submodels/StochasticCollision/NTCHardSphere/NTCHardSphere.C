@@ -41,23 +41,45 @@ inline scalar getFraction
 
 
 template<class CloudType>
-void Foam::NTCHardSphere<CloudType>::checkCoeffs(const dictionary& subModels)
+const Foam::dictionary& Foam::NTCHardSphere<CloudType>::coeffs::known
+(
+    const dictionary& subModels
+)
 {
-    using namespace NTCHardSphereChecks;
-
-    const dictionary& coeffs = subModels.subDict(typeName + "Coeffs");
-
+    const dictionary& dict = subModels.subDict(typeName + "Coeffs");
     inputChecks::rejectUnknown
     (
-        coeffs, {"e", "alphaValid", "alphaSwitch", "randomSeed"}
+        dict, {"e", "alphaValid", "alphaSwitch", "randomSeed"}
     );
-    inputChecks::getClosed(coeffs, "e", 0, 1);
-    getFraction(coeffs, "alphaValid", 0.1);
-    if (coeffs.found("alphaSwitch"))
-    {
-        getFraction(coeffs, "alphaSwitch", 1);
-    }
-    inputChecks::getLabelOrDefault(coeffs, "randomSeed", 0, 0, 2000);
+    return dict;
+}
+
+
+template<class CloudType>
+Foam::NTCHardSphere<CloudType>::coeffs::coeffs(const dictionary& subModels)
+:
+    dict(known(subModels)),
+    e(inputChecks::getClosed(dict, "e", 0, 1)),
+    alphaValid(NTCHardSphereChecks::getFraction(dict, "alphaValid", 0.1)),
+    alphaSwitch
+    (
+        // (no default: absent, NTC runs wherever the grains are)
+        dict.found("alphaSwitch")
+      ? NTCHardSphereChecks::getFraction(dict, "alphaSwitch", 1)
+      : GREAT
+    ),
+    randomSeed(inputChecks::getLabelOrDefault(dict, "randomSeed", 0, 0, 2000))
+{}
+
+
+template<class CloudType>
+void Foam::NTCHardSphere<CloudType>::check
+(
+    const dictionary& subModels,
+    const dictionary&
+)
+{
+    coeffs{subModels};      // (read and checked, then dropped)
 }
 
 
@@ -373,24 +395,23 @@ Foam::NTCHardSphere<CloudType>::NTCHardSphere
     CloudType& owner
 )
 :
+    NTCHardSphere(dict, owner, coeffs(dict))
+{}
+
+
+template<class CloudType>
+Foam::NTCHardSphere<CloudType>::NTCHardSphere
+(
+    const dictionary& dict,
+    CloudType& owner,
+    const coeffs& c
+)
+:
     StochasticCollisionModel<CloudType>(dict, owner, typeName),
-    e_(this->coeffDict().template get<scalar>("e")),
-    alphaValid_
-    (
-        this->coeffDict().template getOrDefault<scalar>("alphaValid", 0.1)
-    ),
-    alphaSwitch_
-    (
-        this->coeffDict().template getOrDefault<scalar>("alphaSwitch", GREAT)
-    ),
-    rnd_
-    (
-        randomStreams::seed
-        (
-            this->coeffDict().template getOrDefault<label>("randomSeed", 0),
-            randomStreams::grainCollisions
-        )
-    ),
+    e_(c.e),
+    alphaValid_(c.alphaValid),
+    alphaSwitch_(c.alphaSwitch),
+    rnd_(randomStreams::seed(c.randomSeed, randomStreams::grainCollisions)),
     sigmaCrMax_(owner.mesh().nCells(), Zero),
     remainder_(owner.mesh().nCells(), Zero),
     nCandidates_(owner.mesh().nCells(), Zero),
@@ -398,8 +419,6 @@ Foam::NTCHardSphere<CloudType>::NTCHardSphere
     nParcelSteps_(owner.mesh().nCells(), Zero),
     over_()
 {
-    checkCoeffs(dict);
-
     // (sigma c_r)_max of a restart
     const fvMesh& mesh = owner.mesh();
     IOobject io
