@@ -139,6 +139,8 @@ def make(name, species, seed, simulators, steps, write, extra=()):
     foam.set_entry(case, CONTROL, "deltaT", DT)
     foam.set_entry(case, CONTROL, "endTime", f"{steps*DT:.6g}")
     foam.set_entry(case, CONTROL, "writeInterval", write)
+    foam.set_entry(case, CONTROL, "functions",
+                   "{ vibrationalT { type gasVibrationalT; writeControl writeTime; } }")
     foam.run(case, "blockMesh")
     foam.run(case, "rarefiedMultiphaseInitialise")
     return case

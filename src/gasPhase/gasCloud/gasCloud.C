@@ -389,6 +389,18 @@ const Foam::gasCellAverage& Foam::gasCloud::cellState() const
 }
 
 
+const Foam::gasCellAverage& Foam::gasCloud::sinceWrite() const
+{
+    if (!sinceWrite_.valid())
+    {
+        FatalErrorInFunction
+            << "the gas has not been sampled yet: its average since the"
+            << " last write exists after the first step" << exit(FatalError);
+    }
+    return sinceWrite_();
+}
+
+
 void Foam::gasCloud::writeFields() const
 {
     DSMCCloud<gasParcel>::writeFields();

@@ -152,40 +152,23 @@ void Foam::gasCloud::sampleCells()
     }
 
     now_->sample(*this);
+    if (resetSinceWrite_)
+    {
+        sinceWrite_->reset();
+        resetSinceWrite_ = false;
+    }
     sinceWrite_->add(now_());
 
     if (mesh().time().writeTime())
     {
         lambda_ = sinceWrite_->lambda();
         writeCellField(mesh(), "gas", "lambda", dimLength, lambda_);
-        if (vibration_.active())
-        {
-            writeVibrationalT(sinceWrite_());
-        }
         reportStepCriteria(sinceWrite_());
         reportMajorantExcess();
-        sinceWrite_->reset();
-    }
-}
 
-
-void Foam::gasCloud::writeVibrationalT(const gasCellAverage& average) const
-{
-    writeCellField
-    (
-        mesh(), "gas", "vibrationalT", dimTemperature,
-        average.vibrationalT(-1)()
-    );
-    forAll(typeIdList(), typei)
-    {
-        if (vibration_.nOscillators(typei))
-        {
-            writeCellField
-            (
-                mesh(), typeIdList()[typei], "vibrationalT", dimTemperature,
-                average.vibrationalT(typei)()
-            );
-        }
+        // (kept until the next step's sample, for the function objects
+        // that write its means: gasVibrationalT)
+        resetSinceWrite_ = true;
     }
 }
 
