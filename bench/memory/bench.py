@@ -47,29 +47,19 @@ Run from the project directory:
 """
 
 import argparse
-import importlib.util
 import os
 import re
 import shutil
 import subprocess
 import sys
 
-from rmf import foam
+from rmf import foam, mppic
 
 BUILD = os.path.join(foam.PROJECT_DIR, "build", "bench", "memory")
 PSI = os.path.join(foam.PROJECT_DIR, "tutorials", "psi", "apolloScaledPSI")
 MIB = 1024.0**2
 # Full PSI case at steady state: simulators (its README's estimate)
 FULL_SIMULATORS = 14e6
-
-
-def _mppic_bench():
-    """bench/mppic's module, for its MPPIC set-up of both solvers."""
-    path = os.path.join(foam.PROJECT_DIR, "bench", "mppic", "bench.py")
-    spec = importlib.util.spec_from_file_location("bench_mppic", path)
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
 
 
 def peak(case, app, *args):
@@ -154,13 +144,12 @@ def bench_gas(args):
 
 def bench_parcels(args):
     """Bytes per MPPIC parcel, ours and MPPICFoam."""
-    mppic = _mppic_bench()
-    mppic.BUILD = os.path.join(BUILD, "mppic")
+    build = os.path.join(BUILD, "mppic")
     result = {}
     runs = {}
     for key, n in (("small", args.parcels), ("large", 4*args.parcels)):
-        ours = mppic.prepare_ours(args.steps, parcels=n)
-        stock, count = mppic.prepare_stock(ours, args.steps)
+        ours = mppic.prepare_ours(build, args.steps, parcels=n)
+        stock, count = mppic.prepare_stock(build, ours, args.steps)
         runs[key] = (count, {"rarefiedMultiphaseFoam": ours, "MPPICFoam": stock})
         # prepare_* reuse their directories: keep this size's pair
         for app, case in runs[key][1].items():
