@@ -9,47 +9,13 @@ parcels of 749 glass beads, d = 0.3 mm, rho = 2500 kg/m^3, at rest,
 uniform at alpha = 0.3; g = (0 0 -9.8) m/s^2; dt = 1 ms), meshed
 (blockMesh) and initialised (rarefiedMultiphaseInitialise) once.
 
-The set-up (rmf.mppic, shared with bench/memory): both clouds get the same MPPIC submodels, set here with foamDictionary in
-both dictionaries from one list (MPPIC_ENTRIES), whatever the tutorial's
-own choice: packing explicit (HarrisCrighton: alphaPacked 0.6, pSolid 10,
-beta 2, eps 1e-7; correctionLimitingMethod absolute, e 0.85), damping
-none, isotropy stochastic (timeScaleModel isotropic, alphaPacked 0.6,
-e 0.85), no stochastic collisions, no dispersion, walls rebound e 0.85
-(localInteraction), gravity as a particle force.  Averaging: ours with
-cachedDual (the project's cached copy of upstream's dual, same results)
-and, as a third column, with dual; MPPICFoam with dual.
-
-Ours runs the grains alone in vacuum (no gas, no carrier solve).  The
-stock solver needs a carrier phase, made practically absent: air at rest
-(U.air = 0, p = 0; walls noSlip / fixedFluxPressure), rho.air =
-2.5e-3 kg/m^3 (1e-6 of the grains'), nu = 1e-5 m^2/s (mu = 2.5e-8 Pa s),
-laminar, two-way coupled (semiImplicit momentum source) as in MPPICFoam's
-column tutorial, whose fvSchemes/fvSolution (PIMPLE, 1 outer, 2 pressure
-correctors, GAMG) are used.  Grain forces: gravity (buoyancy factor
-1 - 1e-6) and ErgunWenYuDrag, MPPICFoam's usual drag.  At that density the
-drag is negligible: its response time rho_p alpha_c d^2/((150 alpha_d/
-alpha_c + 1.75 Re) mu) is about 100 s at alpha = 0.3 and 16 s at
-alpha = 0.6, against a run of a few 0.01 s, so it changes the grains'
-velocity by well under 1 % of the slip.  The carrier's fields are
-interpolated to the parcels with `cell` (upstream's MPPICFoam tutorials
-use the dearer cellPoint for U.air): the stock cloud does no more than it
-must.  MPPICFoam still solves the carrier's momentum and pressure each
-step (with the cloud's momentum source): that is part of its cost by
-design.
-
-Same parcels: MPPICFoam injects, with manualInjection at SOI 0
-(parcelBasisType fixed, nParticle 749, d fixedValue 0.3 mm, U0 = 0), the
-positions our initialiser wrote (0/lagrangian/grains/positions, legacy
-"(x y z) cell" lines, copied to constant/kinematicCloudPositions with 17
-significant digits): same points, same count.  Remaining differences:
-upstream's manualInjection (SOI 0, so a zero injection period) moves each
-new parcel over the whole first step before the step's motion moves the
-cloud again, so MPPICFoam's first step applies gravity twice and its
-cloud runs one step of free fall (9.8 mm/s) ahead of ours in velocity
-(the first step is not timed); the isotropy model's random numbers are
-different streams, so the two clouds follow the same flow statistically,
-not parcel by parcel; ours carries more per-parcel properties (T, Cp,
-surface accommodation) that it does not use in vacuum.
+The set-up is rmf.mppic's (shared with bench/memory; its docstring gives
+it in full): both clouds get the same MPPIC submodels from one list;
+ours runs the grains alone in vacuum, the stock solver with a practically
+absent carrier (air at 1e-6 of the grains' density, at rest) whose
+momentum and pressure it still solves each step, by design; MPPICFoam
+injects the positions our initialiser wrote, so both start from the same
+parcels.
 
 Each repetition runs, serially and one after another, each on a fresh
 copy from t = 0 for --steps steps: ours (cachedDual), ours (dual),
