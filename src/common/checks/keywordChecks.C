@@ -94,6 +94,19 @@ void Foam::inputChecks::rejectUnknown
 }
 
 
+const Foam::dictionary& Foam::inputChecks::knownSubDict
+(
+    const dictionary& dict,
+    const word& name,
+    const wordList& valid
+)
+{
+    const dictionary& sub = dict.subDict(name);
+    rejectUnknown(sub, valid);
+    return sub;
+}
+
+
 void Foam::inputChecks::rejectMisspelt
 (
     const dictionary& dict,

@@ -27,8 +27,8 @@ using namespace inputChecks;
 
 void checkVariableHardSphere(const dictionary& dict, const wordList&)
 {
-    const dictionary& coeffs = dict.subDict("VariableHardSphereCoeffs");
-    rejectUnknown(coeffs, {"Tref"});
+    const dictionary& coeffs =
+        knownSubDict(dict, "VariableHardSphereCoeffs", {"Tref"});
     getPositive(coeffs, "Tref");
 }
 
@@ -39,9 +39,11 @@ void checkLarsenBorgnakkeVariableHardSphere
     const wordList&
 )
 {
-    const dictionary& coeffs =
-        dict.subDict("LarsenBorgnakkeVariableHardSphereCoeffs");
-    rejectUnknown(coeffs, {"Tref", "relaxationCollisionNumber"});
+    const dictionary& coeffs = knownSubDict
+    (
+        dict, "LarsenBorgnakkeVariableHardSphereCoeffs",
+        {"Tref", "relaxationCollisionNumber"}
+    );
     getPositive(coeffs, "Tref");
     getInterval(coeffs, "relaxationCollisionNumber", interval::atLeast(1));
 }
@@ -49,16 +51,16 @@ void checkLarsenBorgnakkeVariableHardSphere
 
 void checkMixedDiffuseSpecular(const dictionary& dict, const wordList&)
 {
-    const dictionary& coeffs = dict.subDict("MixedDiffuseSpecularCoeffs");
-    rejectUnknown(coeffs, {"diffuseFraction"});
+    const dictionary& coeffs =
+        knownSubDict(dict, "MixedDiffuseSpecularCoeffs", {"diffuseFraction"});
     getClosed(coeffs, "diffuseFraction", 0, 1);
 }
 
 
 void checkFreeStream(const dictionary& dict, const wordList& species)
 {
-    const dictionary& coeffs = dict.subDict("FreeStreamCoeffs");
-    rejectUnknown(coeffs, {"numberDensities"});
+    const dictionary& coeffs =
+        knownSubDict(dict, "FreeStreamCoeffs", {"numberDensities"});
     const dictionary& densities = coeffs.subDict("numberDensities");
     for (const word& name : densities.toc())
     {

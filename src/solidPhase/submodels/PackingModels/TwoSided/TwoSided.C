@@ -19,32 +19,22 @@
 // * * * * * * * * * * * * * * * Input checks  * * * * * * * * * * * * * * * //
 
 template<class CloudType>
-const Foam::dictionary&
-Foam::PackingModels::TwoSided<CloudType>::coeffs::known
-(
-    const dictionary& subModels
-)
-{
-    const dictionary& dict = subModels.subDict(typeName + "Coeffs");
-    inputChecks::rejectUnknown
-    (
-        dict,
-        {
-            "particleStressModel", "e", "alphaMin", "relief", "smoothing",
-            "packedCells", "predictMean"
-        }
-    );
-    return dict;
-}
-
-
-template<class CloudType>
 Foam::PackingModels::TwoSided<CloudType>::coeffs::coeffs
 (
     const dictionary& subModels
 )
 :
-    dict(known(subModels)),
+    dict
+    (
+        inputChecks::knownSubDict
+        (
+            subModels, typeName + "Coeffs",
+            {
+                "particleStressModel", "e", "alphaMin", "relief", "smoothing",
+                "packedCells", "predictMean"
+            }
+        )
+    ),
     e(inputChecks::getClosed(dict, "e", 0, 1)),
     alphaMin
     (

@@ -41,24 +41,16 @@ inline scalar getFraction
 
 
 template<class CloudType>
-const Foam::dictionary& Foam::NTCHardSphere<CloudType>::coeffs::known
-(
-    const dictionary& subModels
-)
-{
-    const dictionary& dict = subModels.subDict(typeName + "Coeffs");
-    inputChecks::rejectUnknown
-    (
-        dict, {"e", "alphaValid", "alphaSwitch", "randomSeed"}
-    );
-    return dict;
-}
-
-
-template<class CloudType>
 Foam::NTCHardSphere<CloudType>::coeffs::coeffs(const dictionary& subModels)
 :
-    dict(known(subModels)),
+    dict
+    (
+        inputChecks::knownSubDict
+        (
+            subModels, typeName + "Coeffs",
+            {"e", "alphaValid", "alphaSwitch", "randomSeed"}
+        )
+    ),
     e(inputChecks::getClosed(dict, "e", 0, 1)),
     alphaValid(NTCHardSphereChecks::getFraction(dict, "alphaValid", 0.1)),
     alphaSwitch
