@@ -141,7 +141,7 @@ Foam::wordList Foam::gasCloudInputCheck::checkProperties
         }
     )
     {
-        gasModelChecks::check(model, dict, species);
+        gasModelChecks::call(model, dict, species);
     }
 
     // Vibrational modes need a collision model that exchanges them

@@ -15,19 +15,4 @@ namespace Foam
 }
 
 
-void Foam::gasModelChecks::check
-(
-    const word& typeName,
-    const dictionary& dict,
-    const wordList& species
-)
-{
-    const gasModelChecker* checker = find(typeName);
-    if (checker)
-    {
-        (*checker)(dict, species);
-    }
-}
-
-
 // ************************************************************************* //

@@ -17,21 +17,6 @@ namespace Foam
 }
 
 
-void Foam::solidModelChecks::check
-(
-    const word& typeName,
-    const dictionary& dict,
-    const dictionary& cloudProperties
-)
-{
-    const solidModelChecker* checker = find(typeName);
-    if (checker)
-    {
-        (*checker)(dict, cloudProperties);
-    }
-}
-
-
 // * * * * * * * * * * * * * * * * Functions * * * * * * * * * * * * * * * * //
 
 void Foam::solidChecks::particleStress
@@ -48,7 +33,7 @@ void Foam::solidChecks::particleStress
 
     inputChecks::getOpen(dict, "alphaPacked", 0, 1);
 
-    solidModelChecks::check(type, dict, cloudProperties);
+    solidModelChecks::call(type, dict, cloudProperties);
 }
 
 

@@ -43,7 +43,7 @@ void checkSelected
     const dictionary& props
 )
 {
-    solidModelChecks::check(modelName<Model>(models, keyword), models, props);
+    solidModelChecks::call(modelName<Model>(models, keyword), models, props);
 }
 
 
