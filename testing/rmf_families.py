@@ -167,6 +167,16 @@ def wedge(dst, np_, seed=None, extra=()):
     return _mesh_and_fill(case, np_, seed)
 
 
+def sub_stepped(dst, np_, seed=None):
+    """The wedge with the gas's bound majorants sub-stepped per cell
+    (collisionSubSteps), a sub-step per 0.01 collisions so that its cells
+    take several and the cap (4) is met: the sub-steps' per-cell state
+    goes through a restart."""
+    return wedge(dst, np_, seed, extra=[
+        ("constant/dsmcProperties", "collisionSubSteps",
+         "{ collisionsPerSubStep 0.01; maxSubSteps 4; }")])
+
+
 def vibrating(dst, np_, seed=None):
     """The wedge with vibrational levels (doc/physics.md#vibration): the argon
     given two fictitious oscillators (400 K, degeneracy 2; Z_v 2) that
@@ -194,6 +204,7 @@ FAMILIES = {
     "Loth": (lambda d, n, seed=None: coupled(d, n, "Loth", seed), 5),
     "adaptive": (lambda d, n, seed=None: coupled(d, n, "adaptive", seed), 5),
     "axisymmetric": (wedge, 5),
+    "subSteps": (lambda d, n, seed=None: sub_stepped(d, n, seed), 5),
     "vibration": (vibrating, 5),
     "upstreamIsotropy": (lambda d, n: _upstream_isotropy(d, n), 5),
 }

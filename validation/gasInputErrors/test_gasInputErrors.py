@@ -112,3 +112,31 @@ def test_unknown_keyword(meshed, name, path, entry, value, apps, texts):
         for text in ("FOAM FATAL IO ERROR", path,
                      "Unknown keyword '" + entry.split("/")[-1] + "'") + texts:
             assert text in out, (app, text)
+
+
+# collisionSubSteps (the gas's bound majorants, sub-stepped per cell):
+# (name, entries set, texts beyond the file and the error's heading)
+SUB_STEPS = "{ collisionsPerSubStep 1; maxSubSteps 64; }"
+SUB_STEP_CASES = [
+    ("subStepsPerStepZero", (("collisionSubSteps/collisionsPerSubStep", "0"),),
+     ("collisionsPerSubStep", "value: 0", "(0, inf)")),
+    ("subStepsCapZero", (("collisionSubSteps/maxSubSteps", "0"),),
+     ("maxSubSteps", "value: 0", "[1, 100000]")),
+    ("subStepsUnknown", (("collisionSubSteps/maxSubStep", "5"),),
+     ("Unknown keyword 'maxSubStep'", "maxSubSteps")),
+    ("subStepsBarycentric", (("tracking", "barycentric"),),
+     ("tracking", "barycentric", "cartesian (the default) with collisionSubSteps")),
+    ("subStepsNoCollisions", (("BinaryCollisionModel", "NoBinaryCollision"),),
+     ("BinaryCollisionModel", "NoBinaryCollision", "LarsenBorgnakkeVariableSoftSphere")),
+]
+
+
+@pytest.mark.parametrize("name, entries, texts", SUB_STEP_CASES,
+                         ids=[c[0] for c in SUB_STEP_CASES])
+def test_collision_sub_steps(meshed, name, entries, texts):
+    case = with_entry(meshed, name, GAS, "collisionSubSteps", SUB_STEPS)
+    for entry, value in entries:
+        foam.set_entry(case, GAS, entry, value)
+    out = run_failing(case, "rarefiedMultiphaseFoam")
+    for text in ("FOAM FATAL IO ERROR", GAS) + texts:
+        assert text in out, text

@@ -54,6 +54,7 @@ void Foam::gasCloud::readState()
     {
         collisionSelectionRemainder() = remainder;
     }
+    subSteps_.get(state);
 }
 
 
@@ -118,6 +119,14 @@ Foam::gasCloud::gasCloud(const word& cloudName, const fvMesh& mesh)
     ),
     boxes_(nullptr),
     wedges_(nullptr),
+    vhs_(new vhsCrossSection(*this)),
+    subSteps_
+    (
+        particleProperties(),
+        mesh.nCells(),
+        cartesianTracking(particleProperties()),
+        vhs_->bounded()
+    ),
     writeState_(true),
     majorant_(sigmaTcRMax()),
     remainder_(collisionSelectionRemainder()),
@@ -146,7 +155,6 @@ Foam::gasCloud::gasCloud(const word& cloudName, const fvMesh& mesh)
             << " cells, barycentric elsewhere" << nl << endl;
     }
 
-    vhs_.reset(new vhsCrossSection(*this));
     seedFromCase();
     readState();
     account_.read(mesh, cloudName, mesh.boundaryMesh());
@@ -169,6 +177,14 @@ Foam::gasCloud::gasCloud
     randomEntryTime_(false),    // the fill moves nothing
     boxes_(nullptr),
     wedges_(nullptr),
+    vhs_(nullptr),              // (upstream's fill builds no models)
+    subSteps_
+    (
+        particleProperties(),
+        mesh.nCells(),
+        cartesianTracking(particleProperties()),
+        true                    // (the solver checks the model)
+    ),
     writeState_(false),
     majorant_(sigmaTcRMax()),
     remainder_(collisionSelectionRemainder()),
@@ -195,7 +211,9 @@ void Foam::gasCloud::arrive(const label celli)
     // candidates: over N arrivals (RWF_c - 1) N (N - 1)/2 of them
     const label k = nArrived_[celli]++;
 
-    if (k)
+    // (the bound majorants of collisionSubSteps weigh the cell's
+    // candidates by its RWF themselves)
+    if (k && !subSteps_.active())
     {
         collisionSelectionRemainder()[celli] +=
             (cellWeight_[celli] - 1)*k*nParticle()
@@ -344,7 +362,11 @@ void Foam::gasCloud::evolve()
 
     // Upstream's collisions draw each cell's candidates from its
     // majorant and raise it for the next step when a candidate exceeds it
-    const scalarField drawnMax(sigmaTcRMax().primitiveField());
+    // (the bound majorants of collisionSubSteps count their own excess)
+    const scalarField drawnMax
+    (
+        subSteps_.active() ? scalarField() : sigmaTcRMax().primitiveField()
+    );
 
     if (boxes_ || wedges_)
     {
@@ -412,6 +434,7 @@ void Foam::gasCloud::writeFields() const
     dictionary state;
     restartState::put(state, "random", rnd_);
     restartState::put(state, "collisionSelectionRemainder", remainder_);
+    subSteps_.put(state);
     restartState::write(mesh(), name(), typeName, state);
     account_.write(mesh(), name(), mesh().boundaryMesh());
 }

@@ -13,6 +13,136 @@ Description
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+Foam::label Foam::gasCloud::pick
+(
+    const label n,
+    const label i,
+    const DynamicList<label>& octant
+)
+{
+    Random& rnd = rndGen();
+    const label nOctant = octant.size();
+
+    label j = i;
+    while (j == i)
+    {
+        j = nOctant > 1
+          ? octant[rnd.position<label>(0, nOctant - 1)]
+          : rnd.position<label>(0, n - 1);
+    }
+    return j;
+}
+
+
+Foam::label Foam::gasCloud::collideBounded
+(
+    const label celli,
+    const List<DynamicList<label>>& octants,
+    const UList<label>& octantOf,
+    label& nTried
+)
+{
+    const DynamicList<gasParcel*>& members = cellOccupancy()[celli];
+    const label n = members.size();
+    Random& rnd = rndGen();
+    scalar& remainder = collisionSelectionRemainder()[celli];
+    const scalar w =
+        axisymmetric_.weighted() ? cellWeight_[celli] : scalar(1);
+
+    const label k = subSteps_.subSteps(celli, n);
+
+    // Candidates per unit majorant in a sub-step
+    const scalar rate =
+        0.5*n*(n - 1)*nParticle()*w*mesh().time().deltaTValue()
+       /(k*mesh().cellVolumes()[celli]);
+
+    label tried = 0;
+    label collided = 0;
+    scalar bound = 0;
+    ntcSelection::excess over;     // (none unless the bound is wrong)
+    for (label s = 0; s < k; ++s)
+    {
+        // The two largest speeds about the mean velocity bound every
+        // relative speed in the cell
+        vector mean(Zero);
+        for (const gasParcel* p : members)
+        {
+            mean += p->U();
+        }
+        mean /= n;
+
+        scalar d1 = 0;
+        scalar d2 = 0;
+        auto spread = [&](const gasParcel& p)
+        {
+            const scalar d = mag(p.U() - mean);
+            if (d > d1)
+            {
+                d2 = d1;
+                d1 = d;
+            }
+            else if (d > d2)
+            {
+                d2 = d;
+            }
+        };
+        for (const gasParcel* p : members)
+        {
+            spread(*p);
+        }
+        bound = vhs_->largest(sqr(d1 + d2));
+
+        // Candidates as time at the bound's rate: a raised bound scales
+        // what is left of the sub-step
+        scalar budget = rate*bound + remainder;
+        while (budget >= 1)
+        {
+            budget -= 1;
+            ++tried;
+
+            const label i = rnd.position<label>(0, n - 1);
+            const label j = pick(n, i, octants[octantOf[i]]);
+            gasParcel& p = *members[i];
+            gasParcel& q = *members[j];
+
+            scalar drawn = bound;
+            if
+            (
+                ntcSelection::accept
+                (
+                    vhs_->sigmaTcR(p, q), drawn, bound, rnd, over
+                )
+            )
+            {
+                binaryCollision().collide(p, q);
+                ++collided;
+
+                const scalar before = d1 + d2;
+                spread(p);
+                spread(q);
+                if (d1 + d2 > before)
+                {
+                    const scalar raised = vhs_->largest(sqr(d1 + d2));
+                    budget *= raised/bound;
+                    bound = raised;
+                }
+            }
+        }
+        remainder = budget;
+    }
+
+    if (over.n > 0)
+    {
+        majorantExcess_.n += 1;
+        majorantExcess_.largest = max(majorantExcess_.largest, over.largest);
+    }
+    sigmaTcRMax()[celli] = bound;
+    subSteps_.record(celli, n, tried, collided);
+    nTried += tried;
+    return collided;
+}
+
+
 void Foam::gasCloud::collide()
 {
     if (!binaryCollision().active())
@@ -41,6 +171,10 @@ void Foam::gasCloud::collide()
         const label n = members.size();
         if (n < 2)
         {
+            if (subSteps_.active())
+            {
+                subSteps_.record(celli, n, 0, 0);
+            }
             continue;
         }
 
@@ -63,6 +197,12 @@ void Foam::gasCloud::collide()
             octantOf[i] = k;
         }
 
+        if (subSteps_.active())
+        {
+            nCollided += collideBounded(celli, octants, octantOf, nTried);
+            continue;
+        }
+
         const scalar drawnMax = majorant[celli];
         const label nCandidates = ntcSelection::candidates
         (
@@ -74,19 +214,8 @@ void Foam::gasCloud::collide()
         for (label c = 0; c < nCandidates; ++c)
         {
             const label i = rnd.position<label>(0, n - 1);
-            const DynamicList<label>& octant = octants[octantOf[i]];
-            const label nOctant = octant.size();
-
-            label j = i;
-            while (j == i)
-            {
-                j = nOctant > 1
-                  ? octant[rnd.position<label>(0, nOctant - 1)]
-                  : rnd.position<label>(0, n - 1);
-            }
-
             gasParcel& p = *members[i];
-            gasParcel& q = *members[j];
+            gasParcel& q = *members[pick(n, i, octants[octantOf[i]])];
 
             if
             (

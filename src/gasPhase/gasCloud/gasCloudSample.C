@@ -165,6 +165,7 @@ void Foam::gasCloud::sampleCells()
         writeCellField(mesh(), "gas", "lambda", dimLength, lambda_);
         reportStepCriteria(sinceWrite_());
         reportMajorantExcess();
+        subSteps_.write(mesh());
 
         // (kept until the next step's sample, for the function objects
         // that write its means: gasVibrationalT)

@@ -7,6 +7,7 @@
 #include "vhsCrossSection.H"
 #include "VariableHardSphere.H"
 #include "LarsenBorgnakkeVariableHardSphere.H"
+#include "VariableSoftSphere.H"
 #include "physicoChemicalConstants.H"
 #include "mathematicalConstants.H"
 
@@ -14,15 +15,15 @@
 
 Foam::vhsCrossSection::vhsCrossSection(const DSMCCloud<gasParcel>& cloud)
 :
-    nSpecies_(cloud.constProps().size())
+    nSpecies_(cloud.constProps().size()),
+    upstream_(false)
 {
-    const BinaryCollisionModel<DSMCCloud<gasParcel>>& model =
-        cloud.binaryCollision();
-    if
-    (
-        !isA<VariableHardSphere<DSMCCloud<gasParcel>>>(model)
-     && !isA<LarsenBorgnakkeVariableHardSphere<DSMCCloud<gasParcel>>>(model)
-    )
+    typedef DSMCCloud<gasParcel> cloudType;
+    const BinaryCollisionModel<cloudType>& model = cloud.binaryCollision();
+    upstream_ =
+        isA<VariableHardSphere<cloudType>>(model)
+     || isA<LarsenBorgnakkeVariableHardSphere<cloudType>>(model);
+    if (!upstream_ && !isA<VariableSoftSphere<cloudType>>(model))
     {
         return;
     }

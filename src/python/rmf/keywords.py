@@ -53,6 +53,7 @@ TABLES = {
         (r"constant/dsmcProperties", r"BinaryCollisionModel"),
         (r"constant/dsmcProperties\.(\w*VariableHardSphere|\w*VariableSoftSphere)"
          r"Coeffs(\..*)?", r".*"),
+        (r"constant/dsmcProperties\.collisionSubSteps", r".*"),
     ],
     "gas-species": [
         (r"constant/dsmcProperties\.moleculeProperties\.<species>", r".*"),
