@@ -177,6 +177,14 @@ def sub_stepped(dst, np_, seed=None):
          "{ collisionsPerSubStep 0.01; maxSubSteps 4; }")])
 
 
+def bgk(dst, np_, seed=None):
+    """The wedge with the particle ES-BGK model in its cells of collision
+    number above 0.17 (back to DSMC below 0.13; the gas's mean is 0.15): some cells are BGK, some
+    DSMC, and some switch; the cells' model goes through a restart."""
+    return wedge(dst, np_, seed, extra=[
+        ("constant/dsmcProperties", "esBGK", "{ switchAbove 0.17; switchBelow 0.13; }")])
+
+
 def vibrating(dst, np_, seed=None):
     """The wedge with vibrational levels (doc/physics.md#vibration): the argon
     given two fictitious oscillators (400 K, degeneracy 2; Z_v 2) that
@@ -205,6 +213,7 @@ FAMILIES = {
     "adaptive": (lambda d, n, seed=None: coupled(d, n, "adaptive", seed), 5),
     "axisymmetric": (wedge, 5),
     "subSteps": (lambda d, n, seed=None: sub_stepped(d, n, seed), 5),
+    "esBGK": (lambda d, n, seed=None: bgk(d, n, seed), 5),
     "vibration": (vibrating, 5),
     "upstreamIsotropy": (lambda d, n: _upstream_isotropy(d, n), 5),
 }

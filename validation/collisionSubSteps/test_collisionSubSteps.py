@@ -47,19 +47,16 @@ from concurrent.futures import ThreadPoolExecutor
 
 import numpy as np
 import pytest
-from scipy import integrate, optimize
 
 from rmf import foam
-from rmf_box import FILL, GAS, K, MASS, V_CELL, cloud_file, copy_box
+from rmf_box import K, V_CELL, cloud_file
+from rmf_heatbath import (CONTROL, SPECIES, T_REF, bath_state, cool, fit_noise, fit_Z,
+                          lb_entries, rotational_Z)
+import rmf_heatbath
 import rmf_testing
-from rmf_testing import seed
 
 BUILD = os.path.join(foam.PROJECT_DIR, "build", "validation", "collisionSubSteps")
-CONTROL = "system/controlDict"
-T_REF = 273.0
-SPECIES = {"Ar": dict(mass=MASS["Ar"], d=4.17e-10, omega=0.81, zeta=0),
-           "N2": dict(mass=MASS["N2"], d=4.17e-10, omega=0.74, zeta=2,
-                      theta=3371.0)}
+SUB_STEPS = [("collisionSubSteps", "{ collisionsPerSubStep 1; maxSubSteps 64; }")]
 STEPS_PER_TAU = (10, 50)                # Delta t over the mean collision time
 COMPARISONS = 6                         # module docstring
 N_SIGMA = rmf_testing.z_limit(COMPARISONS)
@@ -71,119 +68,8 @@ SIMULATORS_RATE, STEPS_RATE, BATCHES = 5000, 40, 10
 N_BATH, T_BATH = 1e21, 3000.0
 SIMULATORS_BATH, STEPS_BATH = 60000, 60
 RELAXATION_STEPS = 10                   # Z tau_c over Delta t (the input Z's)
-MODEL = "LarsenBorgnakkeVariableSoftSphere"
 # 3. the bound: argon beams at +-BEAM along x
 BEAM, STEPS_BEAM = 2000.0, 10           # [m/s]: 6 c_mp
-
-
-def collision_time(species, n, T):
-    """VHS mean collision time at n and T (Bird 1994 eq. 4.64) [s]."""
-    s = SPECIES[species]
-    return 1/(4*n*s["d"]**2*math.sqrt(math.pi*K*T_REF/s["mass"])
-              * (T/T_REF)**(1 - s["omega"]))
-
-
-def make(name, species, n, T0, steps_per_tau, steps, simulators, write, sub_steps=True,
-         seed_k=1, extra=()):
-    """The box with one species at n and T0, Delta t = steps_per_tau mean
-    collision times (at T0), `steps` steps writing every `write`."""
-    case = copy_box(os.path.join(BUILD, name), species, n)
-    for path in ("constant/grainsProperties", "system/grainsInitialiseDict"):
-        os.remove(os.path.join(case, path))
-    dt = steps_per_tau*collision_time(species, n, T0)
-    entries = [("nEquivalentParticles", f"{n*V_CELL/simulators:.17g}"),
-               ("randomSeed", seed(seed_k))]
-    if sub_steps:
-        entries.append(("collisionSubSteps", "{ collisionsPerSubStep 1; maxSubSteps 64; }"))
-    for entry, value in entries + list(extra):
-        foam.set_entry(case, GAS, entry, value)
-    foam.set_entry(case, FILL, "randomSeed", seed(seed_k))
-    foam.set_entry(case, FILL, "temperature", T0)
-    foam.set_entry(case, CONTROL, "deltaT", f"{dt:.9g}")
-    foam.set_entry(case, CONTROL, "endTime", f"{steps*dt:.9g}")
-    foam.set_entry(case, CONTROL, "writeInterval", write)
-    foam.run(case, "blockMesh")
-    foam.run(case, "rarefiedMultiphaseInitialise")
-    return case
-
-
-def equilibrium(mode, T):
-    """Mean energy over k of the mode at T: rotation (zeta 2) T, the
-    vibration's harmonic oscillator theta/(exp(theta/T) - 1)."""
-    if mode == "rotation":
-        return T
-    theta = SPECIES["N2"]["theta"]
-    return theta/math.expm1(theta/T)
-
-
-def relaxation(mode, t, T_tr, start, Z, n):
-    """The mode's mean energy over k at times t by the relaxation law
-        dE/dt = (E*(T_tr) - E)/(Z tau_c(T_tr))
-    (Jeans for rotation, Landau-Teller for vibration) with the run's
-    T_tr(t) (linear between writes)."""
-    def rate(time, e):
-        T = np.interp(time, t, T_tr)
-        return [(equilibrium(mode, T) - e[0])/(Z*collision_time("N2", n, T))]
-    sol = integrate.solve_ivp(rate, (t[0], t[-1]), [start], t_eval=t,
-                              rtol=1e-8, atol=1e-10)
-    return sol.y[0]
-
-
-def fit_Z(mode, t, T_tr, e, n):
-    """Z of the law integrated with the run's T_tr(t), least squares
-    against its mean energy e(t) (e(0) the start)."""
-    res = optimize.minimize_scalar(
-        lambda z: ((relaxation(mode, t, T_tr, e[0], z, n) - e)**2).sum(),
-        bounds=(1, 5000), method="bounded", options={"xatol": 1e-4})
-    return res.x
-
-
-def bath_state(case, time):
-    """(T_tr, E_rot/k, E_vib/k) per molecule of the simulators at a written
-    time."""
-    s = SPECIES["N2"]
-    U = foam.read_list(cloud_file(case, time, "U"))
-    Ei = foam.read_list(cloud_file(case, time, "Ei"))
-    level = foam.read_list(cloud_file(case, time, "vibLevel0"))
-    return (s["mass"]*U.var(axis=0).sum()/(3*K), Ei.mean()/K,
-            s["theta"]*level.mean())
-
-
-def rotational_Z(Z):
-    """The rotational collision number of the Jeans law for Larsen-
-    Borgnakke's exchange with probability 1/Z per simulator and collision
-    (doc/physics.md#collision-sub-steps): a relaxed simulator draws its
-    energy from the collision's, so it keeps part of its own and moves
-    1/(1 + zeta/(5 - 2 omega)) of the way to equilibrium."""
-    s = SPECIES["N2"]
-    return Z*(1 + s["zeta"]/(5 - 2*s["omega"]))
-
-
-def fit_noise(mode, t, T_tr, e, Z, n, simulators):
-    """Standard deviation of fit_Z from the thermal noise of the mean
-    energy alone, independent of the code: the fit linearised about Z
-    (J = de/dZ) under the noise's covariance C, var = J'CJ/(J'J)^2.  The
-    mean energy of N simulators fluctuates with variance e^2/N (rotation,
-    zeta 2: an exponential energy) or theta^2 a (1 + a)/N (vibration, mean
-    level a), relaxing at the law's rate (Onsager's regression: an
-    Ornstein-Uhlenbeck process, as the vibration heat bath's synthetic
-    runs)."""
-    theta = SPECIES["N2"]["theta"]
-    law = relaxation(mode, t, T_tr, e[0], Z, n)
-    J = (relaxation(mode, t, T_tr, e[0], Z*1.001, n) - law)/(0.001*Z)
-    if mode == "rotation":
-        var = law**2/simulators
-    else:
-        a = law/theta
-        var = theta**2*a*(1 + a)/simulators
-    rho = np.exp(-np.diff(t)/(Z*np.array([collision_time("N2", n, T) for T in T_tr[1:]])))
-    m = len(t)
-    C = np.zeros((m, m))
-    for i in range(m):
-        C[i, i] = var[i]
-        for j in range(i + 1, m):
-            C[i, j] = C[j, i] = C[j - 1, i]*rho[j - 1]
-    return math.sqrt(J @ C @ J)/(J @ J)
 
 
 def log_lines(case, pattern):
@@ -193,8 +79,15 @@ def log_lines(case, pattern):
 
 
 EXCEEDED = r"\(sigma c_r\)_max was exceeded (\S+), largest acceptance probability (\S+)"
-SUB_STEPS = (r"sub-steps since the last write: (\S+) cell-steps in more than one "
+SUB_STEPPED = (r"sub-steps since the last write: (\S+) cell-steps in more than one "
              r"\(largest (\d+)\), capped (\S+); acceptance of the bound (\S+)")
+
+
+def make(name, *args, sub_steps=True, extra=()):
+    """rmf_heatbath.make in BUILD/name, with collisionSubSteps unless
+    sub_steps is false."""
+    return rmf_heatbath.make(os.path.join(BUILD, name), *args,
+                             extra=(SUB_STEPS if sub_steps else []) + list(extra))
 
 
 def rate_run(per_tau):
@@ -205,18 +98,10 @@ def rate_run(per_tau):
 
 
 def bath_run(per_tau):
-    Z = RELAXATION_STEPS*per_tau
-    extra = [("BinaryCollisionModel", MODEL),
-             (f"{MODEL}Coeffs", f"{{ Tref {T_REF:g}; alpha {{ N2 1; }}"
-                                f" relaxationCollisionNumber {Z:g}; }}"),
-             ("moleculeProperties/N2/vibrationalModes",
-              f"{{ stretch {{ temperature {SPECIES['N2']['theta']:g}; }} }}"),
-             ("moleculeProperties/N2/vibrationalRelaxationCollisionNumber", Z)]
     case = make(f"bath{per_tau}", "N2", N_BATH, T_BATH, per_tau, STEPS_BATH,
-                SIMULATORS_BATH, 1, extra=extra)
-    for name in ("vibLevel0", "Ei"):
-        path = cloud_file(case, "0", name)
-        foam.write_list(path, np.zeros_like(foam.read_list(path)))
+                SIMULATORS_BATH, 1,
+                extra=lb_entries(RELAXATION_STEPS*per_tau, vibration=True))
+    cool(case, ("vibLevel0", "Ei"))
     foam.run(case, "rarefiedMultiphaseFoam")
     return case
 
@@ -264,7 +149,7 @@ def test_collision_rate(runs, per_tau):
     batches = counts.reshape(BATCHES, -1).mean(axis=1)
     se = batches.std(ddof=1)/math.sqrt(BATCHES)
     limit = rmf_testing.t_limit(BATCHES - 1, COMPARISONS)
-    steps = log_lines(case, SUB_STEPS)[-1]
+    steps = log_lines(case, SUB_STEPPED)[-1]
     ok = abs(counts.mean() - expected) <= limit*se
     print(f"\n{'PASS' if ok else 'FAIL'} collision rate at Delta t = {per_tau} tau_c: "
           f"{counts.mean():.1f} per step, VHS {expected:.1f} "

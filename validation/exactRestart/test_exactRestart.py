@@ -44,7 +44,7 @@ def _set_predicted(case):
 # Families on 2 ranks as well (DEM's cartesianContacts and the NTC box are
 # covered serially; pairCollision and the rest decompose alike)
 PARALLEL = ["gas", "mppic", "hybrid", "twoWayIndirect", "axisymmetric", "vibration",
-            "subSteps"]
+            "subSteps", "esBGK"]
 
 
 # A variant of a family, its set-up's keywords the family's (so not one

@@ -140,3 +140,38 @@ def test_collision_sub_steps(meshed, name, entries, texts):
     out = run_failing(case, "rarefiedMultiphaseFoam")
     for text in ("FOAM FATAL IO ERROR", GAS) + texts:
         assert text in out, text
+
+
+# esBGK (the particle ES-BGK model in near-continuum cells): (name,
+# entries set, texts beyond the file and the error's heading)
+BGK = "{ switchAbove 20; switchBelow 10; }"
+BGK_CASES = [
+    ("bgkAboveZero", (("esBGK/switchAbove", "0"),), ("switchAbove", "value: 0", "(0, inf)")),
+    ("bgkBelowAbove", (("esBGK/switchBelow", "20"),),
+     ("switchBelow", "value: 20", "(0, switchAbove = 20)")),
+    ("bgkUnknown", (("esBGK/switchBelw", "5"),),
+     ("Unknown keyword 'switchBelw'", "switchBelow")),
+    ("bgkBarycentric", (("tracking", "barycentric"),),
+     ("tracking", "barycentric", "cartesian (the default) with esBGK")),
+    ("bgkMixture", (("moleculeProperties/O2", "{ mass 53.12e-27; diameter 4.07e-10; "
+                     "internalDegreesOfFreedom 2; omega 0.77; }"),
+                    ("typeIdList", "(N2 O2)")),
+     ("typeIdList", "one species with esBGK")),
+    ("bgkVibration", (("moleculeProperties/N2/vibrationalModes",
+                       "{ stretch { temperature 3371; } }"),
+                      ("moleculeProperties/N2/vibrationalRelaxationCollisionNumber", "20"),
+                      ("BinaryCollisionModel", "LarsenBorgnakkeVariableSoftSphere"),
+                      ("LarsenBorgnakkeVariableSoftSphereCoeffs",
+                       "{ Tref 273; alpha { N2 1; } relaxationCollisionNumber 5; }")),
+     ("vibrationalModes", "none with esBGK")),
+]
+
+
+@pytest.mark.parametrize("name, entries, texts", BGK_CASES, ids=[c[0] for c in BGK_CASES])
+def test_es_bgk(meshed, name, entries, texts):
+    case = with_entry(meshed, name, GAS, "esBGK", BGK)
+    for entry, value in entries:
+        foam.set_entry(case, GAS, entry, value)
+    out = run_failing(case, "rarefiedMultiphaseFoam")
+    for text in ("FOAM FATAL IO ERROR", GAS) + texts:
+        assert text in out, text

@@ -130,6 +130,19 @@ void Foam::collisionSubSteps::record
 }
 
 
+void Foam::collisionSubSteps::estimate
+(
+    const label celli,
+    const label n,
+    const scalar collisions
+)
+{
+    last_[celli] = collisions;
+    collisions_[celli] += collisions;
+    simulators_[celli] += n;
+}
+
+
 void Foam::collisionSubSteps::put(dictionary& state) const
 {
     if (active_)

@@ -55,6 +55,7 @@ void Foam::gasCloud::readState()
         collisionSelectionRemainder() = remainder;
     }
     subSteps_.get(state);
+    bgk_.get(state);
 }
 
 
@@ -127,6 +128,12 @@ Foam::gasCloud::gasCloud(const word& cloudName, const fvMesh& mesh)
         cartesianTracking(particleProperties()),
         vhs_->bounded()
     ),
+    bgk_
+    (
+        particleProperties(),
+        mesh.nCells(),
+        cartesianTracking(particleProperties())
+    ),
     writeState_(true),
     majorant_(sigmaTcRMax()),
     remainder_(collisionSelectionRemainder()),
@@ -155,6 +162,7 @@ Foam::gasCloud::gasCloud(const word& cloudName, const fvMesh& mesh)
             << " cells, barycentric elsewhere" << nl << endl;
     }
 
+    bgk_.setGas(*this);
     seedFromCase();
     readState();
     account_.read(mesh, cloudName, mesh.boundaryMesh());
@@ -184,6 +192,12 @@ Foam::gasCloud::gasCloud
         mesh.nCells(),
         cartesianTracking(particleProperties()),
         true                    // (the solver checks the model)
+    ),
+    bgk_
+    (
+        particleProperties(),
+        mesh.nCells(),
+        cartesianTracking(particleProperties())
     ),
     writeState_(false),
     majorant_(sigmaTcRMax()),
@@ -435,6 +449,7 @@ void Foam::gasCloud::writeFields() const
     restartState::put(state, "random", rnd_);
     restartState::put(state, "collisionSelectionRemainder", remainder_);
     subSteps_.put(state);
+    bgk_.put(state);
     restartState::write(mesh(), name(), typeName, state);
     account_.write(mesh(), name(), mesh().boundaryMesh());
 }

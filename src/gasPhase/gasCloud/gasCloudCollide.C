@@ -165,6 +165,11 @@ void Foam::gasCloud::collide()
     label nTried = 0;
     label nCollided = 0;
 
+    if (bgk_.active())
+    {
+        bgk_.newStep();
+    }
+
     forAll(cellOccupancy(), celli)
     {
         const DynamicList<gasParcel*>& members = cellOccupancy()[celli];
@@ -176,6 +181,28 @@ void Foam::gasCloud::collide()
                 subSteps_.record(celli, n, 0, 0);
             }
             continue;
+        }
+
+        if (bgk_.active())
+        {
+            const scalar w =
+                axisymmetric_.weighted() ? cellWeight_[celli] : scalar(1);
+            scalar Lambda = 0;
+            if
+            (
+                bgk_.collide
+                (
+                    celli, members, n*nParticle()*w/V[celli], dt, rnd,
+                    Lambda
+                )
+            )
+            {
+                if (subSteps_.active())
+                {
+                    subSteps_.estimate(celli, n, 0.5*Lambda*n);
+                }
+                continue;
+            }
         }
 
         for (auto& octant : octants)

@@ -166,6 +166,7 @@ void Foam::gasCloud::sampleCells()
         reportStepCriteria(sinceWrite_());
         reportMajorantExcess();
         subSteps_.write(mesh());
+        bgk_.write(mesh());
 
         // (kept until the next step's sample, for the function objects
         // that write its means: gasVibrationalT)

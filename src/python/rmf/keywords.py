@@ -54,6 +54,7 @@ TABLES = {
         (r"constant/dsmcProperties\.(\w*VariableHardSphere|\w*VariableSoftSphere)"
          r"Coeffs(\..*)?", r".*"),
         (r"constant/dsmcProperties\.collisionSubSteps", r".*"),
+        (r"constant/dsmcProperties\.esBGK", r".*"),
     ],
     "gas-species": [
         (r"constant/dsmcProperties\.moleculeProperties\.<species>", r".*"),
@@ -130,6 +131,8 @@ NAMED = {"moleculeProperties": "<species>", "vibrationalModes": "<mode>",
 # Scopes whose keywords are species names
 SPECIES_KEYS = ("composition", "numberDensities", "alpha")
 MESH_RANGE = re.compile(r"the mesh's diagonal = [^)]*")
+# A bound set by another keyword of the case: stated by its name
+KEYWORD_RANGE = re.compile(r"\b(switchAbove) = [^)]*")
 
 BEGIN = re.compile(r"<!-- keywords:([\w-]+) -->\n")
 HEADER = ("| dictionary | keyword | kind | required | valid range or choices |\n"
@@ -161,6 +164,7 @@ def general(row):
     if parts[-1] in SPECIES_KEYS:
         keyword = "<species>"
     valid = MESH_RANGE.sub("the mesh's diagonal", valid)
+    valid = KEYWORD_RANGE.sub(r"\1", valid)
     return (".".join(parts), keyword, kind, required, valid)
 
 
