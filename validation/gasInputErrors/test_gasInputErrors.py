@@ -114,62 +114,49 @@ def test_unknown_keyword(meshed, name, path, entry, value, apps, texts):
             assert text in out, (app, text)
 
 
-# collisionSubSteps (the gas's bound majorants, sub-stepped per cell):
-# (name, entries set, texts beyond the file and the error's heading)
-SUB_STEPS = "{ collisionsPerSubStep 1; maxSubSteps 64; }"
-SUB_STEP_CASES = [
-    ("subStepsPerStepZero", (("collisionSubSteps/collisionsPerSubStep", "0"),),
+# collisionSubSteps (the gas's bound majorants, sub-stepped per cell) and
+# esBGK (the particle ES-BGK model in near-continuum cells), each added to
+# the case: (name, dictionary added, entries set, texts beyond the file and
+# the error's heading)
+SUB_STEPS = ("collisionSubSteps", "{ collisionsPerSubStep 1; maxSubSteps 64; }")
+BGK = ("esBGK", "{ switchAbove 20; switchBelow 10; }")
+GAS_MODEL_CASES = [
+    ("subStepsPerStepZero", SUB_STEPS, (("collisionSubSteps/collisionsPerSubStep", "0"),),
      ("collisionsPerSubStep", "value: 0", "(0, inf)")),
-    ("subStepsCapZero", (("collisionSubSteps/maxSubSteps", "0"),),
+    ("subStepsCapZero", SUB_STEPS, (("collisionSubSteps/maxSubSteps", "0"),),
      ("maxSubSteps", "value: 0", "[1, 100000]")),
-    ("subStepsUnknown", (("collisionSubSteps/maxSubStep", "5"),),
+    ("subStepsUnknown", SUB_STEPS, (("collisionSubSteps/maxSubStep", "5"),),
      ("Unknown keyword 'maxSubStep'", "maxSubSteps")),
-    ("subStepsBarycentric", (("tracking", "barycentric"),),
+    ("subStepsBarycentric", SUB_STEPS, (("tracking", "barycentric"),),
      ("tracking", "barycentric", "cartesian (the default) with collisionSubSteps")),
-    ("subStepsNoCollisions", (("BinaryCollisionModel", "NoBinaryCollision"),),
+    ("subStepsNoCollisions", SUB_STEPS, (("BinaryCollisionModel", "NoBinaryCollision"),),
      ("BinaryCollisionModel", "NoBinaryCollision", "LarsenBorgnakkeVariableSoftSphere")),
-]
-
-
-@pytest.mark.parametrize("name, entries, texts", SUB_STEP_CASES,
-                         ids=[c[0] for c in SUB_STEP_CASES])
-def test_collision_sub_steps(meshed, name, entries, texts):
-    case = with_entry(meshed, name, GAS, "collisionSubSteps", SUB_STEPS)
-    for entry, value in entries:
-        foam.set_entry(case, GAS, entry, value)
-    out = run_failing(case, "rarefiedMultiphaseFoam")
-    for text in ("FOAM FATAL IO ERROR", GAS) + texts:
-        assert text in out, text
-
-
-# esBGK (the particle ES-BGK model in near-continuum cells): (name,
-# entries set, texts beyond the file and the error's heading)
-BGK = "{ switchAbove 20; switchBelow 10; }"
-BGK_CASES = [
-    ("bgkAboveZero", (("esBGK/switchAbove", "0"),), ("switchAbove", "value: 0", "(0, inf)")),
-    ("bgkBelowAbove", (("esBGK/switchBelow", "20"),),
+    ("bgkAboveZero", BGK, (("esBGK/switchAbove", "0"),),
+     ("switchAbove", "value: 0", "(0, inf)")),
+    ("bgkBelowAbove", BGK, (("esBGK/switchBelow", "20"),),
      ("switchBelow", "value: 20", "(0, switchAbove = 20)")),
-    ("bgkUnknown", (("esBGK/switchBelw", "5"),),
+    ("bgkUnknown", BGK, (("esBGK/switchBelw", "5"),),
      ("Unknown keyword 'switchBelw'", "switchBelow")),
-    ("bgkBarycentric", (("tracking", "barycentric"),),
+    ("bgkBarycentric", BGK, (("tracking", "barycentric"),),
      ("tracking", "barycentric", "cartesian (the default) with esBGK")),
-    ("bgkMixture", (("moleculeProperties/O2", "{ mass 53.12e-27; diameter 4.07e-10; "
-                     "internalDegreesOfFreedom 2; omega 0.77; }"),
-                    ("typeIdList", "(N2 O2)")),
+    ("bgkMixture", BGK, (("moleculeProperties/O2", "{ mass 53.12e-27; diameter 4.07e-10; "
+                          "internalDegreesOfFreedom 2; omega 0.77; }"),
+                         ("typeIdList", "(N2 O2)")),
      ("typeIdList", "one species with esBGK")),
-    ("bgkVibration", (("moleculeProperties/N2/vibrationalModes",
-                       "{ stretch { temperature 3371; } }"),
-                      ("moleculeProperties/N2/vibrationalRelaxationCollisionNumber", "20"),
-                      ("BinaryCollisionModel", "LarsenBorgnakkeVariableSoftSphere"),
-                      ("LarsenBorgnakkeVariableSoftSphereCoeffs",
-                       "{ Tref 273; alpha { N2 1; } relaxationCollisionNumber 5; }")),
+    ("bgkVibration", BGK, (("moleculeProperties/N2/vibrationalModes",
+                            "{ stretch { temperature 3371; } }"),
+                           ("moleculeProperties/N2/vibrationalRelaxationCollisionNumber", "20"),
+                           ("BinaryCollisionModel", "LarsenBorgnakkeVariableSoftSphere"),
+                           ("LarsenBorgnakkeVariableSoftSphereCoeffs",
+                            "{ Tref 273; alpha { N2 1; } relaxationCollisionNumber 5; }")),
      ("vibrationalModes", "none with esBGK")),
 ]
 
 
-@pytest.mark.parametrize("name, entries, texts", BGK_CASES, ids=[c[0] for c in BGK_CASES])
-def test_es_bgk(meshed, name, entries, texts):
-    case = with_entry(meshed, name, GAS, "esBGK", BGK)
+@pytest.mark.parametrize("name, added, entries, texts", GAS_MODEL_CASES,
+                         ids=[c[0] for c in GAS_MODEL_CASES])
+def test_gas_collision_options(meshed, name, added, entries, texts):
+    case = with_entry(meshed, name, GAS, *added)
     for entry, value in entries:
         foam.set_entry(case, GAS, entry, value)
     out = run_failing(case, "rarefiedMultiphaseFoam")

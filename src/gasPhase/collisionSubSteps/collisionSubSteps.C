@@ -122,9 +122,7 @@ void Foam::collisionSubSteps::record
     const label collided
 )
 {
-    last_[celli] = collided;
-    collisions_[celli] += collided;
-    simulators_[celli] += n;
+    estimate(celli, n, collided);
     tried_ += tried;
     accepted_ += collided;
 }

@@ -51,6 +51,11 @@ Foam::label Foam::gasCloud::collideBounded
 
     const label k = subSteps_.subSteps(celli, n);
 
+    // The bound is exact for the pair of the two fastest simulators about
+    // the mean (two simulators: always); its power and that of sigmaTcR
+    // round apart by an ulp or two
+    constexpr scalar roundUp = 1 + 1e-12;
+
     // Candidates per unit majorant in a sub-step
     const scalar rate =
         0.5*n*(n - 1)*nParticle()*w*mesh().time().deltaTValue()
@@ -90,7 +95,7 @@ Foam::label Foam::gasCloud::collideBounded
         {
             spread(*p);
         }
-        bound = vhs_->largest(sqr(d1 + d2));
+        bound = roundUp*vhs_->largest(sqr(d1 + d2));
 
         // Candidates as time at the bound's rate: a raised bound scales
         // what is left of the sub-step
@@ -122,7 +127,8 @@ Foam::label Foam::gasCloud::collideBounded
                 spread(q);
                 if (d1 + d2 > before)
                 {
-                    const scalar raised = vhs_->largest(sqr(d1 + d2));
+                    const scalar raised =
+                        roundUp*vhs_->largest(sqr(d1 + d2));
                     budget *= raised/bound;
                     bound = raised;
                 }

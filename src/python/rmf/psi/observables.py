@@ -619,6 +619,24 @@ def transitional(p, knp, kn_switch=KN_SWITCH):
 
 # ----------------------------------------------------------- analysis ----
 
+#: Number density above which a cell holds gas (gas_resolution) [1/m^3]
+GAS_CELL = 1e21
+
+
+def gas_resolution(simulators, n):
+    """The gas's resolution in simulators per cell: over the cells whose
+    number density n (rhoNMean) exceeds GAS_CELL, the median of the
+    simulators per cell (dsmcRhoNMean, the same batch mean) and the shares
+    below 10 and below 1; None without the fields."""
+    if simulators is None or n is None:
+        return None
+    held = simulators[n > GAS_CELL]
+    if not len(held):
+        return None
+    return dict(cells=int(len(held)), of=int(len(n)), median=float(np.median(held)),
+                below10=float(np.mean(held < 10)), below1=float(np.mean(held < 1)))
+
+
 def analyse(case, dr=None, dx=None, shell=SHELL, radial_weight=None):
     """Every observable at every written time: dict(case, settings, cells,
     times [rows], notes, reference time)."""
@@ -665,6 +683,8 @@ def analyse(case, dr=None, dx=None, shell=SHELL, radial_weight=None):
                 notes.append(density_note(case, name))
             if row["shock"]["standoff"] is None:
                 notes.append(f"t = {t}: no shock on the axis ({row['shock']['note']})")
+        row["resolution"] = gas_resolution(field(case, t, "dsmcRhoNMean", cells["n"]),
+                                           field(case, t, "rhoNMean", cells["n"]))
         alpha = field(case, t, "alpha." + CLOUD, cells["n"])
         row["alpha"] = max_alpha(alpha)
         row["validity"] = binary_validity(p, alpha)

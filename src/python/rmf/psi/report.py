@@ -9,7 +9,7 @@ import numpy as np
 
 from rmf import figures
 
-from .observables import (ALPHA_VALID, AXIS_BAND, AXIS_FRACTION, DENSITIES,
+from .observables import (ALPHA_VALID, AXIS_BAND, AXIS_FRACTION, DENSITIES, GAS_CELL,
                           HISTOGRAM_TIMES, JET_QUANTILE, KN_SWITCH, MIN_PARCELS,
                           PEAK_REGION, SHOCK_RISE, SHOCK_SUSTAIN, SIGNIFICANCE,
                           SLAB_PARCELS, SMOOTH_CELLS, STAGNATION_HEIGHT,
@@ -95,6 +95,14 @@ def key_numbers(analysis):
             "{:.3f}")
     at_last("Eroded real-grain fraction, whole layer", "crater", "eroded_layer", 1, "",
             "{:.4f}")
+    for r in reversed(rows):
+        g = r.get("resolution")
+        if g:
+            out.append(f"- Simulators per gas cell (rhoNMean > {GAS_CELL:g} m^-3, "
+                       f"dsmcRhoNMean): median {g['median']:.2f}, {100*g['below10']:.0f} % "
+                       f"below 10, {100*g['below1']:.0f} % below 1 ({g['cells']} of "
+                       f"{g['of']} cells) at t = {r['time']} s")
+            break
     at_last("Shock standoff on the axis", "shock", "standoff", 1e3, " mm", "{:.3f}")
     standoffs = series(analysis, "shock", "standoff")
     if len(standoffs) > 1:
