@@ -65,11 +65,17 @@ def collision_time(species, n, T):
 
 
 def make(path, species, n, T0, steps_per_tau, steps, simulators, write, extra=(),
-         seed_k=1):
+         seed_k=1, cells_x=1):
     """The box in path with one species at n and T0, Delta t =
     steps_per_tau mean collision times (at T0), `steps` steps writing
-    every `write`; extra: more entries of constant/dsmcProperties."""
+    every `write`; extra: more entries of constant/dsmcProperties; cells_x
+    cells along x (one by default)."""
     case = copy_box(path, species, n)
+    mesh = os.path.join(case, "system", "blockMeshDict")
+    with open(mesh) as f:
+        text = f.read()
+    with open(mesh, "w") as f:
+        f.write(text.replace("(0 1 2 3 4 5 6 7) (1 1 1)", f"(0 1 2 3 4 5 6 7) ({cells_x} 1 1)"))
     for path in ("constant/grainsProperties", "system/grainsInitialiseDict"):
         os.remove(os.path.join(case, path))
     dt = steps_per_tau*collision_time(species, n, T0)

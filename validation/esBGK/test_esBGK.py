@@ -31,9 +31,23 @@ the one-cell periodic gas box of validation/freeMolecularCoupling
    number stays DSMC (esBGK.gas 0, its NTC collisions logged), held in
    BGK it performs none (esBGK.gas 1); exact.
 
-Family-wise error: 2.5e-4 (rmf_testing.MODULE_ALPHA) over m = 4
-comparisons (the two anisotropy rates, the two rotations), Bonferroni:
-N_SIGMA = z_limit(4) = 4.00; 3 and 4 are exact.  Seeds: every randomSeed
+5. Interface: argon at 1.6e21 m^-3 and 273 K in the box cut into 4
+   cells along x, Delta t = 3 tau_c between switchBelow 2 and
+   switchAbove 4, the first two cells started in BGK (the restart
+   state's bgkCells), the other two in DSMC (with collisionSubSteps):
+   the hysteresis keeps each half in its model (esBGK.gas exactly 1 and
+   0 at every write, checked), so the gas is half BGK, half DSMC at one
+   state for 300 steps (about 6 acoustic times of the box).  At the end
+   the BGK half holds half the simulators within N_SIGMA binomial sd
+   (sqrt(N)/2), the halves' temperatures agree within N_SIGMA of their
+   chi-square noise, T sqrt(2/(3 N_B) + 2/(3 N_D)), and each half's mean
+   velocity is 0 within N_SIGMA sqrt(kT/(m N_half)) per component.
+
+Family-wise error: 2.5e-4 (rmf_testing.MODULE_ALPHA) over m = 10
+comparisons (the two anisotropy rates, the two rotations, and the
+interface's count, temperature difference and the two halves' three
+velocity components), Bonferroni: N_SIGMA = z_limit(10) = 4.21; 3, 4
+and the interface's selection are exact.  Seeds: every randomSeed
 through rmf_testing.seed(1).
 """
 
@@ -52,7 +66,7 @@ import rmf_heatbath
 import rmf_testing
 
 BUILD = os.path.join(foam.PROJECT_DIR, "build", "validation", "esBGK")
-COMPARISONS = 4
+COMPARISONS = 10
 N_SIGMA = rmf_testing.z_limit(COMPARISONS)
 HELD = [("esBGK", "{ switchAbove 1e-9; switchBelow 1e-10; }")]
 CONSERVATION = 1e-12
@@ -69,8 +83,8 @@ SIMULATORS_BATH, STEPS_BATH = 60000, 60
 BATHS = {"tau_c/2": (0.5, 5.0), "10 tau_c": (10.0, 100.0)}
 
 
-def make(name, *args, extra=()):
-    case = rmf_heatbath.make(os.path.join(BUILD, name), *args, extra=list(extra))
+def make(name, *args, extra=(), **options):
+    case = rmf_heatbath.make(os.path.join(BUILD, name), *args, extra=list(extra), **options)
     foam.set_entry(case, CONTROL, "writePrecision", 17)
     return case
 
@@ -114,16 +128,37 @@ def selection_run(held):
     return case
 
 
+N_INTERFACE, T_INTERFACE = 1.6e21, 273.0
+SIMULATORS_INTERFACE, STEPS_INTERFACE, WRITE_INTERFACE = 40000, 300, 30
+STARTED_BGK = (1, 1, 0, 0)
+
+
+def interface_run(_):
+    extra = [("esBGK", "{ switchAbove 4; switchBelow 2; }"),
+             ("collisionSubSteps", "{ collisionsPerSubStep 1; maxSubSteps 64; }")]
+    case = make("interface", "Ar", N_INTERFACE, T_INTERFACE, 3.0, STEPS_INTERFACE,
+                SIMULATORS_INTERFACE, WRITE_INTERFACE, extra=extra, cells_x=len(STARTED_BGK))
+    state = os.path.join(case, "0", "uniform", "lagrangian", "dsmc")
+    os.makedirs(state, exist_ok=True)
+    with open(os.path.join(state, "gasCloudState"), "w") as f:
+        f.write("FoamFile { version 2.0; format ascii; class dictionary; "
+                "object gasCloudState; }\n"
+                f"bgkCells {len(STARTED_BGK)}({' '.join(map(str, STARTED_BGK))});\n")
+    foam.run(case, "rarefiedMultiphaseFoam")
+    return case
+
+
 @pytest.fixture(scope="module")
 def runs():
-    jobs = ([(anisotropy_run, k) for k in MU_STEPS] + [(bath_run, k) for k in BATHS]
-            + [(selection_run, True), (selection_run, False)])
+    jobs = ([(interface_run, None)] + [(anisotropy_run, k) for k in MU_STEPS]
+            + [(bath_run, k) for k in BATHS] + [(selection_run, True), (selection_run, False)])
     with ThreadPoolExecutor(2) as pool:
         cases = list(pool.map(lambda job: job[0](job[1]), jobs))
+    interface, cases = cases[0], cases[1:]
     n = len(MU_STEPS)
     return {"anisotropy": dict(zip(MU_STEPS, cases[:n])),
             "bath": dict(zip(BATHS, cases[n:n + len(BATHS)])),
-            "held": cases[-2], "dsmc": cases[-1]}
+            "held": cases[-2], "dsmc": cases[-1], "interface": interface}
 
 
 def anisotropy(U):
@@ -208,4 +243,33 @@ def test_selection(runs):
     print(f"\n{'PASS' if ok else 'FAIL'} ES-BGK selection: held in BGK share "
           f"{share(held):g}, NTC collisions {collisions(held):g}; above its threshold "
           f"share {share(dsmc):g}, NTC collisions {collisions(dsmc):g}")
+    assert ok
+
+
+def test_interface(runs):
+    """Half BGK, half DSMC at one state: no drift across the interface
+    (module docstring, 5)."""
+    case = runs["interface"]
+    times = foam.times(case)
+    held = all(
+        np.array_equal(foam.read_field(os.path.join(case, t, "esBGK.gas"), len(STARTED_BGK)),
+                       np.array(STARTED_BGK, float))
+        for t in times[1:])
+    m = SPECIES["Ar"]["mass"]
+    _, cells = foam.read_positions(cloud_file(case, times[-1], "positions"), cells=True)
+    U = foam.read_list(cloud_file(case, times[-1], "U"))
+    bgk = np.isin(cells, np.flatnonzero(STARTED_BGK))
+    N, N_B = len(U), int(bgk.sum())
+    T = [m*U[h].var(axis=0).sum()/(3*K) for h in (bgk, ~bgk)]
+    T_all = m*U.var(axis=0).sum()/(3*K)
+    z_count = (N_B - N/2)/(math.sqrt(N)/2)
+    z_T = (T[0] - T[1])/(T_all*math.sqrt(2/(3*N_B) + 2/(3*(N - N_B))))
+    z_U = [(U[h].mean(axis=0)/math.sqrt(K*T_all/(m*h.sum()))) for h in (bgk, ~bgk)]
+    worst_U = max(np.abs(u).max() for u in z_U)
+    ok = held and max(abs(z_count), abs(z_T), worst_U) <= N_SIGMA
+    print(f"\n{'PASS' if ok else 'FAIL'} ES-BGK/DSMC interface after {len(times) - 1} "
+          f"writes: halves kept their models {held}; BGK half holds {N_B} of {N} "
+          f"({z_count:+.2f} sd), T {T[0]:.2f} K (BGK) and {T[1]:.2f} K (DSMC) "
+          f"({z_T:+.2f} sd), mean velocities within {worst_U:.2f} sd of 0 (limit "
+          f"{N_SIGMA:.2f})")
     assert ok

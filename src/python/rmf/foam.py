@@ -65,8 +65,10 @@ def read_field(path, ncells=None):
     if m:
         kind, n = m.group(1), int(m.group(2))
         start = m.end()
-        end = text.index(b"\n)", start)
-        body = text[start:end]
+        if text[start:start + 1] in (b"\n", b"\r"):
+            body = text[start:text.index(b"\n)", start)]
+        else:   # a short list on one line: n(... ...);
+            body = text[start:text.index(b";", start)].rstrip()[:-1]
         if kind not in (b"scalar", b"vector"):
             raise ValueError(f"{path}: unsupported List<{kind.decode()}>")
         values = _values(body, kind == b"vector")
