@@ -9,7 +9,7 @@ at steps of 10 and 50 mean collision times (STEPS_PER_TAU).
    equilibrium, 5000 simulators, 40 steps: the collisions per step
    against the VHS rate within t_9 standard errors (ten batch means of
    the log's counts).  Measured 2026-12-07: +0.11 % (limit 0.43 %) at 10
-   tau_c and +0.02 % (limit 0.19 %) at 50 tau_c.  Upstream's majorant at
+   tau_c and +0.02 % (limit 0.22 %) at 50 tau_c.  Upstream's majorant at
    these steps (no collisionSubSteps, the same start): -0.9 % at both,
    its first steps short of collisions (not a comparison here).
 
