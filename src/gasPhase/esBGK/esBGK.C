@@ -5,6 +5,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "esBGK.H"
+#include "vhsCrossSection.H"
 #include <cmath>
 #include "inputChecks.H"
 #include "keywordChecks.H"
@@ -37,10 +38,8 @@ Foam::scalar Foam::esBGK::collisionTime(const scalar n, const scalar T) const
 
 Foam::scalar Foam::esBGK::viscosity(const scalar T) const
 {
-    const scalar k = constant::physicoChemical::k.value();
     return
-        15*Foam::sqrt(m_*k*Tref_/constant::mathematical::pi)
-       /(2*(5 - 2*omega_)*(7 - 2*omega_)*d_*d_)
+        vhsCrossSection::referenceViscosity(m_, d_, omega_, Tref_)
        *Foam::pow(T/Tref_, omega_);
 }
 

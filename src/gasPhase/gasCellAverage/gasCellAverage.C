@@ -6,6 +6,7 @@
 
 #include "gasCellAverage.H"
 #include "restartState.H"
+#include "vhsCrossSection.H"
 #include "physicoChemicalConstants.H"
 #include "mathematicalConstants.H"
 
@@ -47,9 +48,6 @@ Foam::gasCellAverage::gasCellAverage
         l.setSize(mesh_.nCells(), Zero);
     }
 
-    using constant::mathematical::pi;
-    const scalar k = constant::physicoChemical::k.value();
-
     forAll(m_, typei)
     {
         const auto& props = gas.constProps()[typei];
@@ -59,8 +57,10 @@ Foam::gasCellAverage::gasCellAverage
         omega_[typei] = props.omega();
         zeta_[typei] = props.internalDegreesOfFreedom();
         muRef_[typei] =
-            15*sqrt(m_[typei]*k*Tref_/pi)
-           /(2*(5 - 2*omega_[typei])*(7 - 2*omega_[typei])*sqr(d_[typei]));
+            vhsCrossSection::referenceViscosity
+            (
+                m_[typei], d_[typei], omega_[typei], Tref_
+            );
     }
 }
 

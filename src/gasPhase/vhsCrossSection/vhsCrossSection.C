@@ -13,6 +13,21 @@
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
+Foam::scalar Foam::vhsCrossSection::referenceViscosity
+(
+    const scalar m,
+    const scalar d,
+    const scalar omega,
+    const scalar Tref
+)
+{
+    const scalar k = constant::physicoChemical::k.value();
+    return
+        15*Foam::sqrt(m*k*Tref/constant::mathematical::pi)
+       /(2*(5 - 2*omega)*(7 - 2*omega)*sqr(d));
+}
+
+
 Foam::vhsCrossSection::vhsCrossSection(const DSMCCloud<gasParcel>& cloud)
 :
     nSpecies_(cloud.constProps().size()),
