@@ -17,6 +17,7 @@ import numpy as np
 from scipy import integrate, optimize
 
 from rmf import foam
+from rmf.kinetic import vhs_collision_time, vhs_viscosity
 from rmf_box import FILL, GAS, K, MASS, V_CELL, cloud_file, copy_box
 from rmf_testing import seed
 
@@ -32,8 +33,7 @@ def viscosity(species, T):
     """VHS viscosity at T, Chapman-Enskog first approximation (Bird 1994
     eq. 4.62)."""
     s = SPECIES[species]
-    return (15*math.sqrt(s["mass"]*K*T_REF/math.pi)
-            / (2*(5 - 2*s["omega"])*(7 - 2*s["omega"])*s["d"]**2)*(T/T_REF)**s["omega"])
+    return vhs_viscosity(T, s["mass"], s["d"], s["omega"], T_REF)
 
 
 def lb_entries(Z, vibration=False):
@@ -60,8 +60,7 @@ def cool(case, names):
 def collision_time(species, n, T):
     """VHS mean collision time at n and T (Bird 1994 eq. 4.64) [s]."""
     s = SPECIES[species]
-    return 1/(4*n*s["d"]**2*math.sqrt(math.pi*K*T_REF/s["mass"])
-              * (T/T_REF)**(1 - s["omega"]))
+    return vhs_collision_time(n, T, s["mass"], s["d"], s["omega"], T_REF)
 
 
 def make(path, species, n, T0, steps_per_tau, steps, simulators, write, extra=(),

@@ -13,8 +13,9 @@ the one-cell periodic gas box of validation/freeMolecularCoupling
    viscous time mu/p in 5 steps and in one step of 2 mu/p.  The rate
    ln(A_0/A_t)/t against p/mu within N_SIGMA of its thermal noise (A
    fluctuates with variance 3/N, relaxing at the same rate; 200 000
-   simulators).  Measured 2026-12-07: 1.021 and 0.979 of p/mu (limits
-   +-0.071 and +-0.096).
+   simulators).  Measured 2026-12-07: 1.015 and 0.984 of p/mu (limits
+   +-0.070 and +-0.097; 1.021 and 0.979 before the model restored
+   momentum and energy over the whole cell).
 
 2. Rotation: the nitrogen heat bath of validation/collisionSubSteps
    (1e21 m^-3, 3000 K, rotation cold, no vibration) with Z = 5 at Delta t
@@ -44,8 +45,9 @@ the one-cell periodic gas box of validation/freeMolecularCoupling
    (sqrt(N)/2), the halves' temperatures agree within N_SIGMA of their
    chi-square noise, T sqrt(2/(3 N_B) + 2/(3 N_D)), and each half's mean
    velocity is 0 within N_SIGMA sqrt(kT/(m N_half)) per component.
-   Measured: +0.88, +1.85 and at most 1.73 sd (seed sets 1 and 2: -0.51,
-   -2.36, 2.20 and -0.24, +0.83, 1.12 sd).
+   Measured: -0.61, -0.68 and at most 1.70 sd (before the whole-cell
+   restore: +0.88, +1.85, 1.73; seed sets 1 and 2 then: -0.51, -2.36,
+   2.20 and -0.24, +0.83, 1.12 sd).
 
 Family-wise error: 2.5e-4 (rmf_testing.MODULE_ALPHA) over m = 10
 comparisons (the two anisotropy rates, the two rotations, and the

@@ -247,12 +247,8 @@ bool Foam::esBGK::collide
         }
     }
     const label nR = relaxed.size();
-    if (nR < 2)
-    {
-        return true;
-    }
 
-    // Rotation: redraws at T_eq, whose energy the relaxed translation
+    // Rotation: redraws at T_eq, whose energy the cell's translation
     // gives or takes
     DynamicList<scalar> oldEi;
     DynamicList<gasParcel*> turned;
@@ -281,50 +277,55 @@ bool Foam::esBGK::collide
             }
         }
     }
-
-    vector uR(Zero);
-    for (const gasParcel* p : relaxed)
+    if (nR == 0 && turned.empty())
     {
-        uR += p->U();
-    }
-    uR /= nR;
-    scalar ER = 0;
-    for (const gasParcel* p : relaxed)
-    {
-        ER += 0.5*m_*magSqr(p->U() - uR);
-    }
-    scalar target = ER - dE;
-    if (target <= 0)
-    {
-        // (too little translational energy in the relaxed set to pay
-        // for the rotation: the rotation waits)
-        forAll(turned, i)
-        {
-            turned[i]->Ei() = oldEi[i];
-        }
-        target = ER;
+        return true;
     }
 
-    List<vector> draw(nR);
-    vector mean(Zero);
-    forAll(draw, i)
+    // The relaxed simulators draw about the cell's mean (A in kelvin)
+    const scalar kByM = Foam::sqrt(k/m_);
+    for (gasParcel* p : relaxed)
     {
         const scalar z0 = rnd.GaussNormal<scalar>();
         const scalar z1 = rnd.GaussNormal<scalar>();
         const scalar z2 = rnd.GaussNormal<scalar>();
-        draw[i] = vector(L00*z0, L10*z0 + L11*z1, L20*z0 + L21*z1 + L22*z2);
-        mean += draw[i];
+        p->U() =
+            u
+          + kByM
+           *vector(L00*z0, L10*z0 + L11*z1, L20*z0 + L21*z1 + L22*z2);
     }
-    mean /= nR;
-    scalar Ed = 0;
-    for (const vector& v : draw)
+
+    // The cell's momentum and energy restored by a shift and a scale of
+    // all its simulators about their mean (restoring them within the
+    // relaxed set would keep in each relaxed simulator its share of the
+    // set's old mean velocity: too slow a relaxation when few relax)
+    vector uNew(Zero);
+    for (const gasParcel* p : members)
     {
-        Ed += 0.5*m_*magSqr(v - mean);
+        uNew += p->U();
     }
-    const scalar scale = Ed > 0 ? Foam::sqrt(target/Ed) : 0;
-    forAll(relaxed, i)
+    uNew /= N;
+    scalar Enew = 0;
+    for (const gasParcel* p : members)
     {
-        relaxed[i]->U() = uR + scale*(draw[i] - mean);
+        Enew += 0.5*m_*magSqr(p->U() - uNew);
+    }
+    const scalar E = 0.5*m_*tr(S);
+    scalar target = E - dE;
+    if (target <= 0)
+    {
+        // (too little translational energy in the cell to pay for the
+        // rotation: the rotation waits)
+        forAll(turned, i)
+        {
+            turned[i]->Ei() = oldEi[i];
+        }
+        target = E;
+    }
+    const scalar scale = Enew > 0 ? Foam::sqrt(target/Enew) : 0;
+    for (gasParcel* p : members)
+    {
+        p->U() = u + scale*(p->U() - uNew);
     }
 
     return true;

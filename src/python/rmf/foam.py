@@ -376,7 +376,8 @@ def read_positions(path, cells=False):
 
 
 def read_patch_field(path, patch):
-    """Values of one patch of an ASCII vol field file: (faces,) or (faces, 3)."""
+    """Values of one patch of an ASCII vol field file: (faces,) or (faces, 3)
+    (a uniform value as one face's)."""
     with open(path, "rb") as f:
         text = f.read()
     start = text.index(b"boundaryField")
@@ -386,9 +387,12 @@ def read_patch_field(path, patch):
     block = text[start + m.end():]
     block = block[:block.index(b"}")]
     v = re.search(rb"value\s+nonuniform\s+List<(\w+)>\s*(\d+)\s*\((.*)\)\s*;", block, re.S)
-    if not v:
-        raise ValueError(f"{path}: patch {patch} has no nonuniform value")
-    return _values(v.group(3), v.group(1) == b"vector")
+    if v:
+        return _values(v.group(3), v.group(1) == b"vector")
+    u = re.search(rb"value\s+uniform\s+([^;]+);", block)
+    if not u:
+        raise ValueError(f"{path}: patch {patch} has no value")
+    return _uniform(u.group(1).strip(), 1)
 
 
 _LOG_SEPARATORS = str.maketrans("/()", "   ")

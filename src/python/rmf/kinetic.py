@@ -42,6 +42,24 @@ K_B = 1.380649e-23
 # ---------------------------------------------------------------------------
 # Free-molecular sphere, by surface integration
 
+
+def vhs_viscosity(T, mass, d, omega, T_ref=273.0):
+    """VHS viscosity at T [Pa s], Chapman-Enskog first approximation
+    (Bird 1994 eq. 4.62; d the diameter at T_ref)."""
+    return (15*math.sqrt(mass*K_B*T_ref/math.pi)/(2*(5 - 2*omega)*(7 - 2*omega)*d**2)
+            * (T/T_ref)**omega)
+
+
+def vhs_collision_time(n, T, mass, d, omega, T_ref=273.0):
+    """VHS mean collision time at n and T [s] (Bird 1994 eq. 4.64)."""
+    return 1/(4*n*d*d*math.sqrt(math.pi*K_B*T_ref/mass)*(T/T_ref)**(1 - omega))
+
+
+def vhs_mean_free_path(n, T, d, omega, T_ref=273.0):
+    """VHS mean free path at n and T [m] (Bird 1994 eq. 4.65)."""
+    return (T/T_ref)**(omega - 0.5)/(math.sqrt(2)*math.pi*d*d*n)
+
+
 def element_coefficients(s, cos_t, tw_by_tg):
     """Pressure and shear coefficient (over 1/2 rho U^2) of a surface element
     whose inward normal makes angle t with the stream; diffuse re-emission
