@@ -270,3 +270,94 @@ def study(quick, seeds, names=None):
             "solver's CPU time over the base's.")
     return dict(rows=rows, errors=list(ERRORS), main_error=MAIN_ERROR, note=note,
                 judged=JUDGED, cost_label="the base's", base="base")
+
+
+# ---------------------------------------------------------------------------
+# The PSI trade on the resolved main job (scene apolloResolved)
+
+RESOLVED_END = 6e-5             # s; the main job's 100 us cost 14-16 min a run
+RESOLVED_SETTINGS = [
+    # name, label, changes: settings file, blocks of settings/resolved
+    # dropped, factor of its gas weight
+    ("reference", "resolved settings (the main job; reference)", {}),
+    ("crater", "crater settings: W_g 5e10, upstream's NTC majorant", {"settings": "crater"}),
+    ("subStepsOnly", "no esBGK: NTC sub-stepped in every cell", {"drop": ("esBGK",)}),
+    ("upstreamNTC", "upstream's NTC majorant, no esBGK, W_g 8e9",
+     {"drop": ("esBGK", "collisionSubSteps")}),
+    ("weight2", "W_g x 2 (1.6e10)", {"weight": 2}),
+]
+RESOLVED_QUICK = ("reference", "crater")
+
+
+def _segments_cpu(case):
+    """The solver's CPU time over its segments (the main job re-balances at
+    writes: log.rarefiedMultiphaseFoam, log...rebalance1, ...)."""
+    logs = sorted(f for f in os.listdir(case) if f.startswith("log.rarefiedMultiphaseFoam"))
+    return sum(cpu_time(os.path.join(case, f)) for f in logs)
+
+
+def prepare_resolved(case, changes, seed, end):
+    """A copy of the tutorial with a resolved-scene setting, every
+    randomSeed set to seed and the end time set."""
+    foam.copy_setup(TUTORIAL, case)
+    shutil.copytree(os.path.join(TUTORIAL, "settings"), os.path.join(case, "settings"))
+    shutil.copy(os.path.join(TUTORIAL, "Allrun"), case)
+    for path in SEEDED:
+        foam.substitute(os.path.join(case, path), r"(randomSeed\s+)\d+;", rf"\g<1>{seed};")
+    foam.substitute(os.path.join(case, "settings", "crater"), r"(\nendTime\s+)[^;]+;",
+                    rf"\g<1>{end:.6g};")
+    resolved = os.path.join(case, "settings", "resolved")
+    for block in changes.get("drop", ()):
+        foam.substitute(resolved, rf"\n{block}\s*\{{[^}}]*\}}", "\n")
+    if "weight" in changes:
+        w = float(foam.get_entry(case, "settings/resolved", "gasWeight"))
+        foam.substitute(resolved, r"(\ngasWeight\s+)[^;]+;",
+                        rf"\g<1>{w*changes['weight']:.6g};")
+    return case
+
+
+def resolved_study(quick, seeds):
+    """The PSI trade on the resolved main job: its settings (hybrid grains,
+    2 ranks) at RESOLVED_END, one change at a time (RESOLVED_SETTINGS; with
+    --quick the reference and the crater settings); the reference over
+    seeds 1..seeds, the others seed 1; errors against the reference of the
+    same seed.  Returns the arguments of rmf.bench.write_outputs."""
+    out = os.path.join(OUT, "apolloResolved")
+    os.makedirs(out, exist_ok=True)
+    chosen = [s for s in RESOLVED_SETTINGS if not quick or s[0] in RESOLVED_QUICK]
+    rows = []
+    for seed in range(1, seeds + 1):
+        for name, label, changes in chosen:
+            if seed > 1 and name != "reference":
+                continue
+            case = prepare_resolved(os.path.join(out, f"seed{seed}", name), changes, seed,
+                                    RESOLVED_END)
+            env = dict(os.environ, RMF_PYTHON=shutil.which("true"))
+            subprocess.run(["./Allrun", "-settings", changes.get("settings", "resolved"),
+                            "-parallel"], cwd=case, env=env, check=True,
+                           stdout=subprocess.DEVNULL)
+            row = {"setting": name, "label": label, "seed": seed, "cpu": _segments_cpu(case)}
+            row.update(observe(case, RESOLVED_END))
+            for t in os.listdir(case):
+                shutil.rmtree(os.path.join(case, t, "lagrangian", "dsmc"), ignore_errors=True)
+            rows.append(row)
+            print(f"seed {seed} {name}: drop {1e3*row['dropValue']:.3f} mm, standoff "
+                  f"{1e3*row['standoffValue']:.3f} mm, ejecta {row['ejectaValue']:.3g} m/s "
+                  f"({row['ejectaParcels']} parcels), CPU {row['cpu']:.1f} s", flush=True)
+    for r in rows:
+        ref = next(b for b in rows if b["setting"] == "reference" and b["seed"] == r["seed"])
+        r["cost"] = r["cpu"]/ref["cpu"]
+        for e in ERRORS:
+            r[e] = relative_error(r[e + "Value"], ref[e + "Value"])
+    refs = [r for r in rows if r["setting"] == "reference"]
+    noise = "; ".join(f"{e} {_spread(refs, e + 'Value')}" for e in ERRORS)
+    note = (f"Scaled Apollo PSI on the resolved main job (tutorials/psi/apolloScaledPSI, "
+            f"settings/resolved, hybrid grains, 2 ranks), {1e6*RESOLVED_END:g} us, the "
+            f"reference over {seeds} seed(s), the other settings seed 1.  Reference: the "
+            "resolved settings (W_g 8e9, NTC sub-stepped, ES-BGK above Lambda 20); its "
+            f"values over the seeds (SI units, mean ± sd): {noise}.  Errors against the "
+            "reference of the same seed, as the demo's study below.  Cost: the solver's "
+            "CPU time (the master rank's, summed over the re-balanced segments) over the "
+            "reference's.")
+    return dict(rows=rows, errors=list(ERRORS), main_error=MAIN_ERROR, note=note,
+                judged=JUDGED, cost_label="the reference's", base="reference")

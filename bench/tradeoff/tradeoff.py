@@ -80,6 +80,22 @@ apolloPSI (tutorials/psi/apolloScaledPSI, demo, serial): bench/tradeoff/apollo.p
     the axis, shock standoff, ejecta speed and angle, max alpha.  Full
     size: 60 us, --seeds 2 (30 minutes); --quick: 20 us, 6 settings, 1
     seed (3 minutes).
+
+apolloResolved (tutorials/psi/apolloScaledPSI, resolved settings, hybrid,
+    2 ranks): bench/tradeoff/apollo.py
+    Reference: the main job's resolved settings.  Settings: the crater
+    settings, no esBGK, upstream's NTC majorant, the gas weight doubled.
+    Errors as apolloPSI's.  Full size: 60 us, --seeds 2 (about an hour);
+    --quick: the reference and the crater settings, 1 seed.
+
+denseGas (a nitrogen layer between a cold surface and a hot, moving
+    wall: rmf.channel): bench/tradeoff/denseGas.py
+    Reference: NTC at a step of a tenth of the mean collision time.
+    Settings: ES-BGK at that step; NTC with upstream's majorant, NTC
+    sub-stepped and ES-BGK at steps of 1 to 45 mean collision times.
+    Errors: the surface's shear, heat flux and pressure, the gas's
+    temperature and slip on it.  Full size: Kn 0.02, --seeds 2;
+    --quick: Kn 0.05, steps 1 and 20, 1 seed.
 """
 
 import argparse
@@ -397,14 +413,27 @@ def snider_scene(quick, seeds):
                          judged=tuple(errors), cost_label="the tutorial setting's")
 
 
+def dense_gas(quick, seeds):
+    """The gas models at long steps on a dense layer: bench/tradeoff/denseGas.py."""
+    import denseGas
+    return write_outputs("denseGas", **denseGas.study(quick, seeds))
+
+
 def apollo_psi(quick, seeds):
     """The scaled Apollo PSI scene: bench/tradeoff/apollo.py."""
     import apollo
     return write_outputs("apolloPSI", **apollo.study(quick, seeds))
 
 
+def apollo_resolved(quick, seeds):
+    """The scaled Apollo PSI on the resolved main job: bench/tradeoff/apollo.py."""
+    import apollo
+    return write_outputs("apolloResolved", **apollo.resolved_study(quick, seeds))
+
+
 SCENES = {"erosionBox": erosion_box, "dustCloudStream": dust_cloud_stream,
-          "snider": snider_scene, "apolloPSI": apollo_psi}
+          "snider": snider_scene, "apolloPSI": apollo_psi, "denseGas": dense_gas,
+          "apolloResolved": apollo_resolved}
 
 
 def to_doc(scene):
