@@ -93,7 +93,7 @@ import subprocess
 import numpy as np
 
 from rmf import foam
-from rmf.bench import OUT, cpu_time, relative_error
+from rmf.bench import OUT, against_reference, cpu_time, spread
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 PROJECT = os.path.dirname(os.path.dirname(HERE))
@@ -210,14 +210,17 @@ def observe(case, end):
             "alphaValue": at_end("alpha", "max")}
 
 
-def _spread(rows, key):
-    v = np.array([r[key] for r in rows], float)
-    v = v[np.isfinite(v)]
-    if len(v) == 0:
-        return "n/a"
-    if len(v) == 1:
-        return f"{v[0]:.4g}"
-    return f"{v.mean():.4g} ± {v.std(ddof=1):.2g}"
+def record(case, name, label, seed, cpu, end):
+    """A finished run's row (setting, seed, CPU time, observables), printed;
+    the gas's simulators, not needed, are removed."""
+    row = {"setting": name, "label": label, "seed": seed, "cpu": cpu}
+    row.update(observe(case, end))
+    for t in os.listdir(case):
+        shutil.rmtree(os.path.join(case, t, "lagrangian", "dsmc"), ignore_errors=True)
+    print(f"seed {seed} {name}: drop {1e3*row['dropValue']:.3f} mm, standoff "
+          f"{1e3*row['standoffValue']:.3f} mm, ejecta {row['ejectaValue']:.3g} m/s "
+          f"({row['ejectaParcels']} parcels), CPU {row['cpu']:.1f} s", flush=True)
+    return row
 
 
 def study(quick, seeds, names=None):
@@ -239,24 +242,10 @@ def study(quick, seeds, names=None):
                 continue
             case = prepare(os.path.join(out, f"seed{seed}", name), changes, seed, end, write)
             run(case, changes.get("variant", "stochastic"))
-            row = {"setting": name, "label": label, "seed": seed,
-                   "cpu": cpu_time(os.path.join(case, "log.rarefiedMultiphaseFoam"))}
-            row.update(observe(case, end))
-            for t in os.listdir(case):      # the gas's simulators: not needed
-                shutil.rmtree(os.path.join(case, t, "lagrangian", "dsmc"), ignore_errors=True)
-            rows.append(row)
-            print(f"seed {seed} {name}: drop {1e3*row['dropValue']:.3f} mm, standoff "
-                  f"{1e3*row['standoffValue']:.3f} mm, ejecta {row['ejectaValue']:.3g} m/s "
-                  f"({row['ejectaParcels']} parcels), CPU {row['cpu']:.1f} s", flush=True)
-    for r in rows:
-        base = next(b for b in rows if b["setting"] == "base" and b["seed"] == r["seed"])
-        ref = next(b for b in rows if b["setting"] == "reference" and b["seed"] == r["seed"])
-        r["cost"] = r["cpu"]/base["cpu"]
-        for e in ERRORS:
-            r[e] = relative_error(r[e + "Value"], ref[e + "Value"])
-
-    refs = [r for r in rows if r["setting"] == "reference"]
-    noise = "; ".join(f"{e} {_spread(refs, e + 'Value')}" for e in ERRORS)
+            rows.append(record(case, name, label, seed,
+                               cpu_time(os.path.join(case, "log.rarefiedMultiphaseFoam")), end))
+    refs = against_reference(rows, ERRORS, base="base")
+    noise = "; ".join(f"{e} {spread(refs, e + 'Value')}" for e in ERRORS)
     note = (f"Scaled Apollo PSI (tutorials/psi/apolloScaledPSI, demo, serial), "
             f"{1e6*end:g} us, base and reference over {seeds} seed(s), the other "
             "settings seed 1.  Base: stochastic grains, twoWayIndirect over 10 steps.  "
@@ -336,21 +325,9 @@ def resolved_study(quick, seeds):
             subprocess.run(["./Allrun", "-settings", changes.get("settings", "resolved"),
                             "-parallel"], cwd=case, env=env, check=True,
                            stdout=subprocess.DEVNULL)
-            row = {"setting": name, "label": label, "seed": seed, "cpu": _segments_cpu(case)}
-            row.update(observe(case, RESOLVED_END))
-            for t in os.listdir(case):
-                shutil.rmtree(os.path.join(case, t, "lagrangian", "dsmc"), ignore_errors=True)
-            rows.append(row)
-            print(f"seed {seed} {name}: drop {1e3*row['dropValue']:.3f} mm, standoff "
-                  f"{1e3*row['standoffValue']:.3f} mm, ejecta {row['ejectaValue']:.3g} m/s "
-                  f"({row['ejectaParcels']} parcels), CPU {row['cpu']:.1f} s", flush=True)
-    for r in rows:
-        ref = next(b for b in rows if b["setting"] == "reference" and b["seed"] == r["seed"])
-        r["cost"] = r["cpu"]/ref["cpu"]
-        for e in ERRORS:
-            r[e] = relative_error(r[e + "Value"], ref[e + "Value"])
-    refs = [r for r in rows if r["setting"] == "reference"]
-    noise = "; ".join(f"{e} {_spread(refs, e + 'Value')}" for e in ERRORS)
+            rows.append(record(case, name, label, seed, _segments_cpu(case), RESOLVED_END))
+    refs = against_reference(rows, ERRORS)
+    noise = "; ".join(f"{e} {spread(refs, e + 'Value')}" for e in ERRORS)
     note = (f"Scaled Apollo PSI on the resolved main job (tutorials/psi/apolloScaledPSI, "
             f"settings/resolved, hybrid grains, 2 ranks), {1e6*RESOLVED_END:g} us, the "
             f"reference over {seeds} seed(s), the other settings seed 1.  Reference: the "

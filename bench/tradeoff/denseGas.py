@@ -63,7 +63,7 @@ import os
 import numpy as np
 
 from rmf import channel, foam
-from rmf.bench import OUT, cpu_time, relative_error
+from rmf.bench import OUT, against_reference, cpu_time, spread
 from rmf.kinetic import vhs_collision_time, vhs_mean_free_path, vhs_viscosity
 
 N2 = dict(mass=46.5e-27, d=4.17e-10, omega=0.74)
@@ -142,13 +142,6 @@ def observe(case):
     return out
 
 
-def _spread(rows, key):
-    v = np.array([r[key] for r in rows], float)
-    if len(v) == 1:
-        return f"{v[0]:.4g}"
-    return f"{v.mean():.4g} ± {v.std(ddof=1):.2g}"
-
-
 def study(quick, seeds, names=None, first=1):
     """Runs the scene's settings over seeds first..first + seeds - 1 (the
     arguments of rmf.bench.write_outputs, as bench/tradeoff/apollo.py's
@@ -168,14 +161,9 @@ def study(quick, seeds, names=None, first=1):
                   f"{row['heatValue']:.4g} W/m^2, p {row['pressureValue']:.4g} Pa, T1 "
                   f"{row['T1Value']:.4g} K, slip {row['slipValue']:.4g} m/s, CPU "
                   f"{row['cpu']:.1f} s", flush=True)
-    for r in rows:
-        ref = next(b for b in rows if b["setting"] == "reference" and b["seed"] == r["seed"])
-        r["cost"] = r["cpu"]/ref["cpu"]
-        for e in ERRORS:
-            r[e] = relative_error(r[e + "Value"], ref[e + "Value"])
-    refs = [r for r in rows if r["setting"] == "reference"]
+    refs = against_reference(rows, ERRORS)
     _, cells, tau, slowest, _ = geometry(quick)
-    noise = "; ".join(f"{e} {_spread(refs, e + 'Value')}" for e in ERRORS)
+    noise = "; ".join(f"{e} {spread(refs, e + 'Value')}" for e in ERRORS)
     note = (f"Dense gas on a cold surface (bench/tradeoff/denseGas.py): nitrogen in a "
             f"channel at Kn {KN[quick]:g}, {cells} cells, {SIMULATORS} simulators a cell, "
             f"between the surface ({SURFACE[0]:g} K, at rest) and the jet's side "

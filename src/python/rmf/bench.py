@@ -51,6 +51,32 @@ def relative_error(x, ref):
     return float(x/ref - 1)
 
 
+def spread(rows, key):
+    """The rows' values of key over the seeds, as text: "mean ± sd" (the
+    finite ones; one value alone, or n/a)."""
+    v = np.array([r[key] for r in rows], float)
+    v = v[np.isfinite(v)]
+    if len(v) == 0:
+        return "n/a"
+    if len(v) == 1:
+        return f"{v[0]:.4g}"
+    return f"{v.mean():.4g} ± {v.std(ddof=1):.2g}"
+
+
+def against_reference(rows, errors, base="reference"):
+    """Each row's cost (its CPU time over the base setting's of the same
+    seed) and its errors (row[e] from row[e + "Value"]) against the
+    reference setting's of the same seed; returns the reference's rows."""
+    def of(name, seed):
+        return next(b for b in rows if b["setting"] == name and b["seed"] == seed)
+    for r in rows:
+        ref = of("reference", r["seed"])
+        r["cost"] = r["cpu"]/of(base, r["seed"])["cpu"]
+        for e in errors:
+            r[e] = relative_error(r[e + "Value"], ref[e + "Value"])
+    return [r for r in rows if r["setting"] == "reference"]
+
+
 def write_outputs(scene, rows, errors, main_error, note, judged=None,
                   cost_label="the reference's", base="base"):
     """CSV of every run, the Pareto picture of the seeds' means and the
