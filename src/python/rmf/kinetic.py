@@ -27,6 +27,10 @@ analytic_grain integrates a grain's velocity and temperature in a uniform
 stream with these laws (bench/tradeoff's dustCloudStream scene and
 tutorials/coupling/dustCloudStream's test); stream_case_data reads its
 stream and grain from such a case.
+
+The VHS gas's viscosity, mean collision time and mean free path (Bird
+1994 eqs. 4.62-4.65): the expected values of the gas's tests and
+benchmarks.
 """
 
 import math
@@ -40,8 +44,7 @@ K_B = 1.380649e-23
 
 
 # ---------------------------------------------------------------------------
-# Free-molecular sphere, by surface integration
-
+# The VHS gas (the tests' and benchmarks' expected transport and times)
 
 def vhs_viscosity(T, mass, d, omega, T_ref=273.0):
     """VHS viscosity at T [Pa s], Chapman-Enskog first approximation
@@ -59,6 +62,9 @@ def vhs_mean_free_path(n, T, d, omega, T_ref=273.0):
     """VHS mean free path at n and T [m] (Bird 1994 eq. 4.65)."""
     return (T/T_ref)**(omega - 0.5)/(math.sqrt(2)*math.pi*d*d*n)
 
+
+# ---------------------------------------------------------------------------
+# Free-molecular sphere, by surface integration
 
 def element_coefficients(s, cos_t, tw_by_tg):
     """Pressure and shear coefficient (over 1/2 rho U^2) of a surface element
