@@ -135,14 +135,21 @@ SEEDED = ("constant/dsmcProperties", "constant/grainsProperties",
           "system/grainsInitialiseDict", "settings/stochastic", "settings/hybrid")
 
 
-def prepare(case, changes, seed, end, write):
+def copy_seeded(case, seed):
     """A copy of the tutorial in case (its 0, constant, system and settings
-    and Allrun) with the changes of a setting and every randomSeed set."""
+    and Allrun) with every randomSeed set to seed."""
     foam.copy_setup(TUTORIAL, case)
     shutil.copytree(os.path.join(TUTORIAL, "settings"), os.path.join(case, "settings"))
     shutil.copy(os.path.join(TUTORIAL, "Allrun"), case)
     for path in SEEDED:
         foam.substitute(os.path.join(case, path), r"(randomSeed\s+)\d+;", rf"\g<1>{seed};")
+    return case
+
+
+def prepare(case, changes, seed, end, write):
+    """The tutorial copied and seeded (copy_seeded) with the changes of a
+    setting."""
+    copy_seeded(case, seed)
     demo = "settings/demo"
 
     def get(key):
@@ -177,10 +184,10 @@ def prepare(case, changes, seed, end, write):
     return case
 
 
-def run(case, variant):
-    """Allrun, serial, without its pictures (RMF_PYTHON=true)."""
+def run(case, *options):
+    """Allrun with options, without its pictures (RMF_PYTHON=true)."""
     env = dict(os.environ, RMF_PYTHON=shutil.which("true"))
-    subprocess.run(["./Allrun", "-variant", variant], cwd=case, env=env, check=True,
+    subprocess.run(["./Allrun", *options], cwd=case, env=env, check=True,
                    stdout=subprocess.DEVNULL)
 
 
@@ -241,7 +248,7 @@ def study(quick, seeds, names=None):
             if seed > 1 and name not in MULTI_SEED:
                 continue
             case = prepare(os.path.join(out, f"seed{seed}", name), changes, seed, end, write)
-            run(case, changes.get("variant", "stochastic"))
+            run(case, "-variant", changes.get("variant", "stochastic"))
             rows.append(record(case, name, label, seed,
                                cpu_time(os.path.join(case, "log.rarefiedMultiphaseFoam")), end))
     refs = against_reference(rows, ERRORS, base="base")
@@ -286,13 +293,9 @@ def _segments_cpu(case):
 
 
 def prepare_resolved(case, changes, seed, end):
-    """A copy of the tutorial with a resolved-scene setting, every
-    randomSeed set to seed and the end time set."""
-    foam.copy_setup(TUTORIAL, case)
-    shutil.copytree(os.path.join(TUTORIAL, "settings"), os.path.join(case, "settings"))
-    shutil.copy(os.path.join(TUTORIAL, "Allrun"), case)
-    for path in SEEDED:
-        foam.substitute(os.path.join(case, path), r"(randomSeed\s+)\d+;", rf"\g<1>{seed};")
+    """The tutorial copied and seeded (copy_seeded) with a resolved-scene
+    setting and the end time set."""
+    copy_seeded(case, seed)
     foam.substitute(os.path.join(case, "settings", "crater"), r"(\nendTime\s+)[^;]+;",
                     rf"\g<1>{end:.6g};")
     resolved = os.path.join(case, "settings", "resolved")
@@ -321,10 +324,7 @@ def resolved_study(quick, seeds):
                 continue
             case = prepare_resolved(os.path.join(out, f"seed{seed}", name), changes, seed,
                                     RESOLVED_END)
-            env = dict(os.environ, RMF_PYTHON=shutil.which("true"))
-            subprocess.run(["./Allrun", "-settings", changes.get("settings", "resolved"),
-                            "-parallel"], cwd=case, env=env, check=True,
-                           stdout=subprocess.DEVNULL)
+            run(case, "-settings", changes.get("settings", "resolved"), "-parallel")
             rows.append(record(case, name, label, seed, _segments_cpu(case), RESOLVED_END))
     refs = against_reference(rows, ERRORS)
     noise = "; ".join(f"{e} {spread(refs, e + 'Value')}" for e in ERRORS)

@@ -107,8 +107,8 @@ def geometry(quick):
     L = lam/KN[quick]
     cells = int(round(CELLS_PER_LAMBDA/KN[quick]))
     tau = vhs_collision_time(N_GAS, T_REF, N2["mass"], N2["d"], N2["omega"], T_REF)
-    nu = vhs_viscosity(T_REF, N2["mass"], N2["d"], N2["omega"], T_REF)/(N_GAS*N2["mass"])
-    return L, cells, tau, L**2/(math.pi**2*nu), lam
+    mu = vhs_viscosity(T_REF, N2["mass"], N2["d"], N2["omega"], T_REF)
+    return L, cells, tau, channel.slowest_time(L, mu, N_GAS*N2["mass"]), lam
 
 
 def run(case, step, model, seed, quick):

@@ -127,7 +127,7 @@ def geometry(Kn):
     L = LAMBDA/Kn
     cells = int(round(CELLS_PER_LAMBDA/Kn))
     dt = STEPS[Kn]*collision_time("Ar", N_GAS, T0)
-    slowest = L**2/(math.pi**2*viscosity("Ar", T0)/(N_GAS*MASS))
+    slowest = channel.slowest_time(L, viscosity("Ar", T0), N_GAS*MASS)
     return L, cells, dt, int(math.ceil(BATCH_TIMES*slowest/dt))
 
 

@@ -8,6 +8,7 @@ validation/esBGK/test_esBGKChannel.py (the ES-BGK model's viscosity and
 conductivity) and bench/tradeoff's denseGas scene (the gas models at long
 steps)."""
 
+import math
 import os
 
 import numpy as np
@@ -65,6 +66,13 @@ def make(case, L, W, cells, n, T0, simulators, seed, dt, write_steps, writes,
     U[:, 0] += U_lo + (U_hi - U_lo)*share
     foam.write_list(path, U)
     return case
+
+
+def slowest_time(L, mu, rho):
+    """The decay time L^2/(pi^2 mu/rho) of the channel's slowest velocity
+    mode [s]: how long a run takes to its steady state, and a batch to be
+    independent of the next."""
+    return L**2/(math.pi**2*mu/rho)
 
 
 def centres(L, cells):
