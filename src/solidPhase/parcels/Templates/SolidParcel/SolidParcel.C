@@ -9,12 +9,6 @@
 #include "wallPolyPatch.H"
 #include "MPPICParcel.H"
 
-// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
-
-template<class ParcelType>
-const Foam::boxWalk* Foam::SolidParcel<ParcelType>::boxes_ = nullptr;
-
-
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 template<class ParcelType>
@@ -92,7 +86,9 @@ struct wedgeCorrection<MPPICParcel<ParcelType>>
 };
 
 
-//- A step's move: upstream's, but for MPPIC's correction passes (below)
+//- A step's move: upstream's, or with Cartesian tracking movePieces in
+//  place of KinematicParcel::move (the tracking part of the colliding
+//  layer, or the kinematic layer's whole move)
 template<class ParcelType>
 struct stepMove
 {
@@ -105,16 +101,23 @@ struct stepMove
         const scalar trackTime
     )
     {
+        if (td.boxes() && td.part() == TrackingData::tpLinearTrack)
+        {
+            return p.movePieces(cloud, td, trackTime);
+        }
         return p.ParcelType::move(cloud, td, trackTime);
     }
 };
 
-//- The correction pass of MPPIC's damping and packing moves the parcel
-//  by its correction UCorrect over the rest of the step, with its own
-//  velocity kept and the correction added for the fraction moved, as
-//  MPPICParcel does; the move is SolidParcel::moveAlong, in one piece to
-//  the next face, not upstream's move in maxCo pieces with each piece's
-//  forces (which are off during the corrections); on a 3-D or wedge mesh
+//- MPPIC's layer.  The correction pass of the damping and packing moves
+//  the parcel by its correction UCorrect over the rest of the step, with
+//  its own velocity kept and the correction added for the fraction
+//  moved, as MPPICParcel does; on a 3-D or wedge mesh the move is
+//  SolidParcel::moveAlong, in one piece to the next face, not upstream's
+//  move in maxCo pieces with each piece's forces (which are off during
+//  the corrections).  With Cartesian tracking movePieces stands for
+//  KinematicParcel::move in the tracking pass and in a reduced-D mesh's
+//  correction pass (which keeps the parcel's age, as upstream's).
 template<class ParcelType>
 struct stepMove<MPPICParcel<ParcelType>>
 {
@@ -130,10 +133,18 @@ struct stepMove<MPPICParcel<ParcelType>>
         // Upstream's move keeps a reduced-D (empty) mesh's parcels on its
         // centre plane; a wedge's corrections have already lost their
         // normal part
+        const bool along =
+            p.mesh().nGeometricD() == 3 || p.onWedge();
+
+        if (td.part() == TrackingData::tpLinearTrack && td.boxes())
+        {
+            td.switchProcessor = false;
+            return p.movePieces(cloud, td, trackTime);
+        }
         if
         (
             td.part() != TrackingData::tpCorrectTrack
-         || (p.mesh().nGeometricD() < 3 && !p.onWedge())
+         || (!along && !td.boxes())
         )
         {
             return p.MPPICParcel<ParcelType>::move(cloud, td, trackTime);
@@ -141,10 +152,20 @@ struct stepMove<MPPICParcel<ParcelType>>
 
         const vector U(p.U());
         const scalar f = p.stepFraction();
+        const scalar age = p.age();
 
         p.U() = (1 - f)*p.UCorrect();
-        const bool keep = p.moveAlong(cloud, td, trackTime);
+        const bool keep =
+        (
+            along
+          ? p.moveAlong(cloud, td, trackTime)
+          : p.movePieces(cloud, td, trackTime)
+        );
         p.U() = U + (p.stepFraction() - f)*p.UCorrect();
+        if (!along)
+        {
+            p.age() = age;
+        }
 
         return keep;
     }
@@ -182,27 +203,17 @@ template<class TrackCloudType>
 bool Foam::SolidParcel<ParcelType>::move
 (
     TrackCloudType& cloud,
-    typename ParcelType::trackingData& td,
+    trackingData& td,
     const scalar trackTime
 )
 {
-    if (!onWedge())
-    {
-        // The cloud's Cartesian tracking while this parcel moves
-        boxes_ = cloud.boxes();
-        const bool keep =
-        (
-            cloud.trackingDisplacement()
-          ? moveAlong(cloud, td, trackTime)
-          : moveStep(cloud, td, trackTime)
-        );
-        boxes_ = nullptr;
-        return keep;
-    }
-
-    if (cloud.trackingDisplacement())
+    if (td.alongDisplacement())
     {
         return moveAlong(cloud, td, trackTime);
+    }
+    if (!onWedge())
+    {
+        return moveStep(cloud, td, trackTime);
     }
 
     // The start point for the radial re-weighting (position() costs a
@@ -228,7 +239,7 @@ template<class TrackCloudType>
 bool Foam::SolidParcel<ParcelType>::moveStep
 (
     TrackCloudType& cloud,
-    typename ParcelType::trackingData& td,
+    trackingData& td,
     const scalar trackTime
 )
 {
@@ -241,10 +252,86 @@ bool Foam::SolidParcel<ParcelType>::moveStep
 
 template<class ParcelType>
 template<class TrackCloudType>
+bool Foam::SolidParcel<ParcelType>::movePieces
+(
+    TrackCloudType& cloud,
+    trackingData& td,
+    const scalar trackTime
+)
+{
+    td.keepParticle = true;
+    td.switchProcessor = false;
+
+    const cloudSolution& solution = cloud.solution();
+    const scalarField& lengths = cloud.cellLengthScale();
+    const scalar maxCo = solution.maxCo();
+
+    // The start of each piece only for cloud functions that ask for it
+    const bool functions = cloud.functions().size() > 0;
+
+    while (td.keepParticle && !td.switchProcessor && this->stepFraction() < 1)
+    {
+        const point start(functions ? walkedPosition(td) : point::zero);
+        const scalar f0 = this->stepFraction();
+        const vector s(trackTime*this->U());
+
+        // At most maxCo of the step and of the cell's length scale; on a
+        // reduced-D mesh back to its centre plane
+        const scalar l = lengths[this->cell()];
+        const vector d(this->deviationFromMeshCentre());
+        scalar f = min(1 - f0, maxCo);
+        f = min(f, maxCo*l/max(SMALL*l, mag(s)));
+
+        if (this->active())
+        {
+            trackPiece(td, f*s - d, f);
+        }
+        else
+        {
+            // Stuck (upstream's stick interaction): the time passes
+            this->stepFraction() += f;
+        }
+
+        // The forces and heat over the time tracked (none over a vanishing
+        // piece)
+        const scalar dt = (this->stepFraction() - f0)*trackTime;
+        if (dt > ROOTVSMALL)
+        {
+            this->setCellValues(cloud, td);
+            this->calcDispersion(cloud, td, dt);
+            if (solution.cellValueSourceCorrection())
+            {
+                this->cellValueSourceCorrection(cloud, td, dt);
+            }
+            this->calc(cloud, td, dt);
+        }
+        this->age() += dt;
+
+        if (functions)
+        {
+            if (this->active() && this->onFace())
+            {
+                cloud.functions().postFace(*this, td.keepParticle);
+            }
+            cloud.functions().postMove(*this, dt, start, td.keepParticle);
+        }
+
+        if (this->active() && this->onFace() && td.keepParticle)
+        {
+            this->hitFace(s, cloud, td);
+        }
+    }
+
+    return td.keepParticle;
+}
+
+
+template<class ParcelType>
+template<class TrackCloudType>
 bool Foam::SolidParcel<ParcelType>::moveAlong
 (
     TrackCloudType& cloud,
-    typename ParcelType::trackingData& td,
+    trackingData& td,
     const scalar trackTime
 )
 {
@@ -259,12 +346,12 @@ bool Foam::SolidParcel<ParcelType>::moveAlong
         // Over the whole step at the present velocity (a wall's rebound
         // turns it)
         const vector s(trackTime*this->U());
-        const point start(functions ? this->position() : point::zero);
+        const point start(functions ? walkedPosition(td) : point::zero);
         const scalar f = 1 - this->stepFraction();
 
         if (this->active())
         {
-            this->trackToFace(f*s, f);
+            trackPiece(td, f*s, f);
         }
         else
         {
@@ -274,7 +361,7 @@ bool Foam::SolidParcel<ParcelType>::moveAlong
 
         if
         (
-            cloud.trackingDisplacement()
+            td.alongDisplacement()
          && this->onBoundaryFace()
          && isA<wallPolyPatch>(this->mesh().boundaryMesh()[this->patch()])
         )
@@ -323,11 +410,6 @@ Foam::scalar Foam::SolidParcel<ParcelType>::trackToFace
 {
     if (!onWedge())
     {
-        scalar left;
-        if (boxes_ && boxes_->trackToFace(*this, displacement, fraction, left))
-        {
-            return left;
-        }
         return ParcelType::trackToFace(displacement, fraction);
     }
 

@@ -638,9 +638,9 @@ void Foam::CartesianContacts<CloudType>::advance
     {
         parcels_[i]->U() = (x_[i] - x0[i])/deltaT;
     }
-    cloud.trackDisplacement(true);
+    td.alongDisplacement() = true;
     cloud.move(cloud, td, deltaT);
-    cloud.trackDisplacement(false);
+    td.alongDisplacement() = false;
 
     // The parcels that stay keep their order (serial: none is sent away)
     label i = 0;
