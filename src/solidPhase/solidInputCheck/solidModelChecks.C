@@ -14,6 +14,8 @@
 namespace Foam
 {
     defineNameRegistry(solidModelChecksTag, solidModelChecker);
+    defineNameRegistry(bodyForcesTag, bool);
+    defineNameRegistry(signedAveragingsTag, bool);
 }
 
 
@@ -61,7 +63,7 @@ void Foam::solidChecks::isotropyAveraging
     // (its name is checked, with its choices, by SolidCloud::checkInput)
     const dictionary& solution = cloudProperties.subDict("solution");
     const word averaging(solution.get<word>("averagingMethod"));
-    if (averaging == "moment")
+    if (signedAveragings::found(averaging))
     {
         inputChecks::badValue
         (

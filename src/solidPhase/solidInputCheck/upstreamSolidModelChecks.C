@@ -107,6 +107,10 @@ const solidModelChecks::add addStandardWallInteraction
     "standardWallInteraction", checkStandardWallInteraction
 );
 
+// Upstream's uniform body force, and its averaging with gradients
+const bodyForces::add addGravity("gravity");
+const signedAveragings::add addMoment("moment");
+
 } // End anonymous namespace
 } // End namespace Foam
 

@@ -128,6 +128,37 @@ void Foam::InterphaseCouplingModel<CloudType>::checkGas
 
 
 template<class CloudType>
+void Foam::InterphaseCouplingModel<CloudType>::checkForces
+(
+    const dictionary& dict
+) const
+{
+    // Upstream's drag forces (sphereDrag, ErgunWenYuDrag, ...) act on the
+    // carrier fields, which this model also acts through: both would push
+    // the grains with the same gas
+    if (!active() || !dict.isDict("particleForces"))
+    {
+        return;
+    }
+
+    const dictionary& forces = dict.subDict("particleForces");
+    for (const entry& e : forces)
+    {
+        const word& force = e.keyword();
+        if (force.ends_with("Drag"))
+        {
+            FatalIOErrorInFunction(forces)
+                << "particleForces lists " << force
+                << " while interphaseCoupling is " << this->modelType()
+                << ": the gas would drag the grains twice.  Remove "
+                << force << " (the coupling model gives the drag) or set"
+                << " interphaseCoupling none" << exit(FatalIOError);
+        }
+    }
+}
+
+
+template<class CloudType>
 void Foam::InterphaseCouplingModel<CloudType>::coupleParcels(gasCloud* gas)
 {
     const bool writing = this->owner().db().time().writeTime();

@@ -30,6 +30,7 @@ Foam::CoupledGrainCloud<CloudType>::CoupledGrainCloud
     )
     {
         coupling_ = InterphaseCouplingModel<CloudType>::New(subModels, cloud_);
+        coupling_->checkForces(subModels);
         coupling_->checkGas(subModels, gasPresent);
     }
 }

@@ -176,18 +176,24 @@ Foam::scalar Foam::regionFill::alphaLimit
 )
 {
     const dictionary& models = cloudProps.subDict("subModels");
-    // A cloud without an MPPIC layer (DEM) has no packing model
+    // A packing model with a particle stress packs to its alphaPacked;
+    // a cloud without (none, or DEM's without an MPPIC layer) to 1
     // (the name is checked, with its choices, by the cloud's checkInput)
     const word packing(models.getOrDefault<word>("packingModel", "none"));
+    const word coeffs(packing + "Coeffs");
 
-    if (packing == "none")
+    if
+    (
+        !models.isDict(coeffs)
+     || !models.subDict(coeffs).isDict("particleStressModel")
+    )
     {
         what = "1 (no packing model)";
         return 1;
     }
 
     const scalar alphaPacked =
-        models.subDict(packing + "Coeffs").subDict("particleStressModel")
+        models.subDict(coeffs).subDict("particleStressModel")
        .get<scalar>("alphaPacked");
     what = "alphaPacked = " + Foam::name(alphaPacked);
     return alphaPacked;

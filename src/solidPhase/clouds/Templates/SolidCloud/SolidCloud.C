@@ -125,32 +125,6 @@ const Foam::word& Foam::SolidCloud<CloudType>::checkInput
         models, "stochasticCollisionModel", props
     );
 
-    // Upstream's drag forces (sphereDrag, ErgunWenYuDrag, ...) act on the
-    // carrier fields, which the coupling also acts through: both would
-    // push the grains with the same gas
-    const word coupling
-    (
-        // (checked, with its choices, by the coupling's selector)
-        models.getOrDefault<word>("interphaseCoupling", "none")
-    );
-    if (coupling != "none" && models.isDict("particleForces"))
-    {
-        const dictionary& forces = models.subDict("particleForces");
-        for (const entry& e : forces)
-        {
-            const word& force = e.keyword();
-            if (force.ends_with("Drag"))
-            {
-                FatalIOErrorInFunction(forces)
-                    << "particleForces lists " << force
-                    << " while interphaseCoupling is " << coupling
-                    << ": the gas would drag the grains twice.  Remove "
-                    << force << " (the coupling model gives the drag) or set"
-                    << " interphaseCoupling none" << exit(FatalIOError);
-            }
-        }
-    }
-
     checkSelected<PatchInteractionModel<kinematicType>>
     (
         models, "patchInteractionModel", props

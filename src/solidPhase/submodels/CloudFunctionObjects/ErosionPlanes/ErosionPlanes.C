@@ -265,16 +265,11 @@ Foam::ErosionPlanes<CloudType>::ErosionPlanes
     );
     if (collisionless_ && !contactModels::found(contacts))
     {
-        std::string honouring;
-        for (const word& model : contactModels::names())
-        {
-            honouring += (honouring.empty() ? "" : " ") + model;
-        }
         inputChecks::badValue
         (
             this->coeffDict(), "collisionless", "true",
-            "false with collisionModel " + contacts + " (only " + honouring
-          + " honours it)"
+            "false with collisionModel " + contacts + " (only "
+          + contactModels::list() + " honours it)"
         );
     }
 

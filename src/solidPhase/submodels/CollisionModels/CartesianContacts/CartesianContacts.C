@@ -6,6 +6,7 @@
 
 #include "CartesianContacts.H"
 #include "inputChecks.H"
+#include "solidModelChecks.H"
 #include "cyclicPolyPatch.H"
 #include "wallPolyPatch.H"
 #include "processorPolyPatch.H"
@@ -510,12 +511,12 @@ Foam::CartesianContacts<CloudType>::CartesianContacts
     const dictionary& forces = owner.forces().dict();
     for (const word& force : forces.toc())
     {
-        if (force != "gravity")
+        if (!bodyForces::found(force))
         {
             inputChecks::badValue
             (
                 forces, force, force,
-                "gravity only with cartesianContacts (the gas acts through"
+                bodyForces::list(", ") + " only with cartesianContacts (the gas acts through"
                 " interphaseCoupling)"
             );
         }
