@@ -256,11 +256,7 @@ Foam::LothCoupling<CloudType>::LothCoupling
     planes_(nullptr),
     restart_(restartState::read(owner.mesh(), owner.name(), stateName))
 {
-    planes_ =
-        ErosionPlanes<typename CloudType::kinematicCloudType>::find
-        (
-            owner.functions()
-        );
+    planes_ = gasShelter::find(owner.functions());
 
     readCoeffs
     (
