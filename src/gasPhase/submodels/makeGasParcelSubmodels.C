@@ -13,6 +13,7 @@ Description
 
 #include "gasCloud.H"
 #include "gasModelChecks.H"
+#include "vhsCrossSection.H"
 
 #include "NoBinaryCollision.H"
 #include "VariableHardSphere.H"
@@ -46,6 +47,25 @@ namespace Foam
     (
         LarsenBorgnakkeVariableSoftSphere,
         gasCloudBase
+    );
+
+    // The models with the variable-hard-sphere law (vhsCrossSection):
+    // upstream's, whose rate its table evaluates, and ours
+    static const vhsModels::add addVHS
+    (
+        VariableHardSphere<gasCloudBase>::typeName_(), true
+    );
+    static const vhsModels::add addLBVHS
+    (
+        LarsenBorgnakkeVariableHardSphere<gasCloudBase>::typeName_(), true
+    );
+    static const vhsModels::add addVSS
+    (
+        VariableSoftSphere<gasCloudBase>::typeName_(), false
+    );
+    static const vhsModels::add addLBVSS
+    (
+        LarsenBorgnakkeVariableSoftSphere<gasCloudBase>::typeName_(), false
     );
 
     // The collision model that exchanges vibrational energy

@@ -5,11 +5,16 @@
 \*---------------------------------------------------------------------------*/
 
 #include "vhsCrossSection.H"
-#include "VariableHardSphere.H"
-#include "LarsenBorgnakkeVariableHardSphere.H"
-#include "VariableSoftSphere.H"
 #include "physicoChemicalConstants.H"
 #include "mathematicalConstants.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    defineNameRegistry(vhsModelsTag, bool);
+}
+
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -33,15 +38,13 @@ Foam::vhsCrossSection::vhsCrossSection(const DSMCCloud<gasParcel>& cloud)
     nSpecies_(cloud.constProps().size()),
     upstream_(false)
 {
-    typedef DSMCCloud<gasParcel> cloudType;
-    const BinaryCollisionModel<cloudType>& model = cloud.binaryCollision();
-    upstream_ =
-        isA<VariableHardSphere<cloudType>>(model)
-     || isA<LarsenBorgnakkeVariableHardSphere<cloudType>>(model);
-    if (!upstream_ && !isA<VariableSoftSphere<cloudType>>(model))
+    const auto& model = cloud.binaryCollision();
+    const bool* upstream = vhsModels::find(model.type());
+    if (!upstream)
     {
         return;
     }
+    upstream_ = *upstream;
 
     const scalar Tref = model.coeffDict().getScalar("Tref");
     const scalar k = constant::physicoChemical::k.value();
