@@ -6,6 +6,11 @@
 
 #include "coordinateTable.H"
 
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+const Foam::wordList Foam::coordinateTable::coordinateNames({"x", "y", "z", "r"});
+
+
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 void Foam::coordinateTable::badRow
@@ -21,6 +26,17 @@ void Foam::coordinateTable::badRow
         (where_ + Foam::name(i) + ": " + what).c_str(),
         valid.c_str()
     );
+}
+
+
+Foam::label Foam::coordinateTable::upper(const scalar s) const
+{
+    label i = 1;
+    while (rows_[i][0] < s)
+    {
+        ++i;
+    }
+    return i;
 }
 
 
@@ -43,8 +59,8 @@ Foam::coordinateTable::coordinateTable
 {
     using namespace inputChecks;
 
-    const wordList coordinates({"x", "y", "z", "r"});
-    coordinate_ = coordinates.find(getChoice(dict, "coordinate", coordinates));
+    coordinate_ =
+        coordinateNames.find(getChoice(dict, "coordinate", coordinateNames));
     if (coordinate_ == 3)
     {
         const vector a(getVector(dict, "axis"));
@@ -177,11 +193,7 @@ Foam::scalar Foam::coordinateTable::value
     {
         return rows_.last()[col];
     }
-    label i = 1;
-    while (rows_[i][0] < s)
-    {
-        ++i;
-    }
+    const label i = upper(s);
     const scalarList& lo = rows_[i-1];
     const scalarList& hi = rows_[i];
     const scalar w = (s - lo[0])/(hi[0] - lo[0]);
@@ -199,11 +211,7 @@ Foam::scalar Foam::coordinateTable::slope
     {
         return 0;
     }
-    label i = 1;
-    while (rows_[i][0] < s)
-    {
-        ++i;
-    }
+    const label i = upper(s);
     return
         (rows_[i][col] - rows_[i-1][col])
        /(rows_[i][0] - rows_[i-1][0]);
@@ -227,10 +235,9 @@ Foam::vector Foam::coordinateTable::direction(const point& x) const
 
 Foam::string Foam::coordinateTable::describe() const
 {
-    const wordList coordinates({"x", "y", "z", "r"});
     return
         Foam::name(rows_.size()) + " rows in "
-      + coordinates[coordinate_] + " from " + Foam::name(sMin())
+      + coordinateNames[coordinate_] + " from " + Foam::name(sMin())
       + " to " + Foam::name(sMax())
       + (clamp_ ? ", clamped outside" : ", error outside");
 }
