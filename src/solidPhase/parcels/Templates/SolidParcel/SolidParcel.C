@@ -86,7 +86,7 @@ struct wedgeCorrection<MPPICParcel<ParcelType>>
 };
 
 
-//- A step's move: upstream's, or with Cartesian tracking movePieces in
+//- A step's move: upstream's, or with Cartesian tracking trackMove in
 //  place of KinematicParcel::move (the tracking part of the colliding
 //  layer, or the kinematic layer's whole move)
 template<class ParcelType>
@@ -103,7 +103,7 @@ struct stepMove
     {
         if (td.boxes() && td.part() == TrackingData::tpLinearTrack)
         {
-            return p.movePieces(cloud, td, trackTime);
+            return p.trackMove(cloud, td, trackTime, true);
         }
         return p.ParcelType::move(cloud, td, trackTime);
     }
@@ -113,11 +113,12 @@ struct stepMove
 //  the parcel by its correction UCorrect over the rest of the step, with
 //  its own velocity kept and the correction added for the fraction
 //  moved, as MPPICParcel does; on a 3-D or wedge mesh the move is
-//  SolidParcel::moveAlong, in one piece to the next face, not upstream's
-//  move in maxCo pieces with each piece's forces (which are off during
-//  the corrections).  With Cartesian tracking movePieces stands for
-//  KinematicParcel::move in the tracking pass and in a reduced-D mesh's
-//  correction pass (which keeps the parcel's age, as upstream's).
+//  SolidParcel::trackMove without forces, in one piece to the next face,
+//  not upstream's move in maxCo pieces with each piece's forces (which
+//  are off during the corrections).  With Cartesian tracking trackMove
+//  with forces stands for KinematicParcel::move in the tracking pass and
+//  in a reduced-D mesh's correction pass (which keeps the parcel's age,
+//  as upstream's).
 template<class ParcelType>
 struct stepMove<MPPICParcel<ParcelType>>
 {
@@ -138,8 +139,7 @@ struct stepMove<MPPICParcel<ParcelType>>
 
         if (td.part() == TrackingData::tpLinearTrack && td.boxes())
         {
-            td.switchProcessor = false;
-            return p.movePieces(cloud, td, trackTime);
+            return p.trackMove(cloud, td, trackTime, true);
         }
         if
         (
@@ -155,12 +155,7 @@ struct stepMove<MPPICParcel<ParcelType>>
         const scalar age = p.age();
 
         p.U() = (1 - f)*p.UCorrect();
-        const bool keep =
-        (
-            along
-          ? p.moveAlong(cloud, td, trackTime)
-          : p.movePieces(cloud, td, trackTime)
-        );
+        const bool keep = p.trackMove(cloud, td, trackTime, !along);
         p.U() = U + (p.stepFraction() - f)*p.UCorrect();
         if (!along)
         {
@@ -209,7 +204,7 @@ bool Foam::SolidParcel<ParcelType>::move
 {
     if (td.alongDisplacement())
     {
-        return moveAlong(cloud, td, trackTime);
+        return trackMove(cloud, td, trackTime, false);
     }
     if (!onWedge())
     {
@@ -252,11 +247,12 @@ bool Foam::SolidParcel<ParcelType>::moveStep
 
 template<class ParcelType>
 template<class TrackCloudType>
-bool Foam::SolidParcel<ParcelType>::movePieces
+bool Foam::SolidParcel<ParcelType>::trackMove
 (
     TrackCloudType& cloud,
     trackingData& td,
-    const scalar trackTime
+    const scalar trackTime,
+    const bool forces
 )
 {
     td.keepParticle = true;
@@ -271,16 +267,23 @@ bool Foam::SolidParcel<ParcelType>::movePieces
 
     while (td.keepParticle && !td.switchProcessor && this->stepFraction() < 1)
     {
+        // The rest of the step at the present velocity (a wall's rebound
+        // turns it)
         const point start(functions ? walkedPosition(td) : point::zero);
         const scalar f0 = this->stepFraction();
         const vector s(trackTime*this->U());
+        scalar f = 1 - f0;
 
-        // At most maxCo of the step and of the cell's length scale; on a
-        // reduced-D mesh back to its centre plane
-        const scalar l = lengths[this->cell()];
-        const vector d(this->deviationFromMeshCentre());
-        scalar f = min(1 - f0, maxCo);
-        f = min(f, maxCo*l/max(SMALL*l, mag(s)));
+        // With forces at most maxCo of the step and of the cell's length
+        // scale; on a reduced-D mesh back to its centre plane
+        vector d(Zero);
+        if (forces)
+        {
+            const scalar l = lengths[this->cell()];
+            d = this->deviationFromMeshCentre();
+            f = min(f, maxCo);
+            f = min(f, maxCo*l/max(SMALL*l, mag(s)));
+        }
 
         if (this->active())
         {
@@ -289,74 +292,7 @@ bool Foam::SolidParcel<ParcelType>::movePieces
         else
         {
             // Stuck (upstream's stick interaction): the time passes
-            this->stepFraction() += f;
-        }
-
-        // The forces and heat over the time tracked (none over a vanishing
-        // piece)
-        const scalar dt = (this->stepFraction() - f0)*trackTime;
-        if (dt > ROOTVSMALL)
-        {
-            this->setCellValues(cloud, td);
-            this->calcDispersion(cloud, td, dt);
-            if (solution.cellValueSourceCorrection())
-            {
-                this->cellValueSourceCorrection(cloud, td, dt);
-            }
-            this->calc(cloud, td, dt);
-        }
-        this->age() += dt;
-
-        if (functions)
-        {
-            if (this->active() && this->onFace())
-            {
-                cloud.functions().postFace(*this, td.keepParticle);
-            }
-            cloud.functions().postMove(*this, dt, start, td.keepParticle);
-        }
-
-        if (this->active() && this->onFace() && td.keepParticle)
-        {
-            this->hitFace(s, cloud, td);
-        }
-    }
-
-    return td.keepParticle;
-}
-
-
-template<class ParcelType>
-template<class TrackCloudType>
-bool Foam::SolidParcel<ParcelType>::moveAlong
-(
-    TrackCloudType& cloud,
-    trackingData& td,
-    const scalar trackTime
-)
-{
-    td.keepParticle = true;
-    td.switchProcessor = false;
-
-    // The start of each piece only for cloud functions that ask for it
-    const bool functions = cloud.functions().size() > 0;
-
-    while (td.keepParticle && !td.switchProcessor && this->stepFraction() < 1)
-    {
-        // Over the whole step at the present velocity (a wall's rebound
-        // turns it)
-        const vector s(trackTime*this->U());
-        const point start(functions ? walkedPosition(td) : point::zero);
-        const scalar f = 1 - this->stepFraction();
-
-        if (this->active())
-        {
-            trackPiece(td, f*s, f);
-        }
-        else
-        {
-            // Stuck (upstream's stick interaction): the time passes
-            this->stepFraction() = 1;
+            this->stepFraction() = forces ? f0 + f : 1;
         }
 
         if
@@ -375,26 +311,38 @@ bool Foam::SolidParcel<ParcelType>::moveAlong
                 << exit(FatalError);
         }
 
+        // The forces and heat over the time tracked (none over a vanishing
+        // piece)
+        const scalar dt = (this->stepFraction() - f0)*trackTime;
+        if (forces)
+        {
+            if (dt > ROOTVSMALL)
+            {
+                this->setCellValues(cloud, td);
+                this->calcDispersion(cloud, td, dt);
+                if (solution.cellValueSourceCorrection())
+                {
+                    this->cellValueSourceCorrection(cloud, td, dt);
+                }
+                this->calc(cloud, td, dt);
+            }
+            this->age() += dt;
+        }
+
         if (functions)
         {
             if (this->active() && this->onFace())
             {
                 cloud.functions().postFace(*this, td.keepParticle);
             }
-            cloud.functions().postMove
-            (
-                *this, (this->stepFraction() - 1 + f)*trackTime, start,
-                td.keepParticle
-            );
-        }
-
-        if (!this->active() || !this->onFace() || !td.keepParticle)
-        {
-            continue;
+            cloud.functions().postMove(*this, dt, start, td.keepParticle);
         }
 
         // An internal face: the next cell; a boundary face: its patch
-        this->hitFace(s, cloud, td);
+        if (this->active() && this->onFace() && td.keepParticle)
+        {
+            this->hitFace(s, cloud, td);
+        }
     }
 
     return td.keepParticle;
