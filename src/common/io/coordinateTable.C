@@ -8,7 +8,10 @@
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
-const Foam::wordList Foam::coordinateTable::coordinateNames({"x", "y", "z", "r"});
+const Foam::wordList Foam::coordinateTable::coordinateNames
+(
+    {"x", "y", "z", "r"}
+);
 
 
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //

@@ -516,7 +516,8 @@ Foam::CartesianContacts<CloudType>::CartesianContacts
             inputChecks::badValue
             (
                 forces, force, force,
-                bodyForces::list(", ") + " only with cartesianContacts (the gas acts through"
+                bodyForces::list(", ")
+              + " only with cartesianContacts (the gas acts through"
                 " interphaseCoupling)"
             );
         }
