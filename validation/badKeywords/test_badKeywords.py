@@ -453,6 +453,16 @@ def test_unknown_gravity_zone(bases):
     _expect(out, families.GRAINS, "'zeroGravityZone'", "nowhere", "one of")
 
 
+def test_adjust_time_step_without_gas(bases):
+    """adjustTimeStep in a case without gas (the Snider column in vacuum):
+    there is nothing to set the step from."""
+    case = _case(bases, "mppic", "adjustVacuum")
+    foam.set_entry(case, "system/controlDict", "adjustTimeStep", "yes")
+    code, out = run_app(case, SOLVER)
+    assert code == 1
+    _expect(out, "system/controlDict", "'adjustTimeStep'", "yes", "constant/dsmcProperties")
+
+
 # -- the fuzz -------------------------------------------------------------------
 
 FUZZ_FILES = ("constant/grainsProperties", "system/grainsInitialiseDict")

@@ -76,7 +76,6 @@ unequal shares: the beam check takes nearly all of it).
 
 import math
 import os
-import re
 
 import numpy as np
 import pytest
@@ -175,20 +174,13 @@ def test_flux_moments():
         assert abs(n_c/n_q - 1) < 1e-12 and abs(e_c/e_q - 1) < 1e-12, (s, n_c/n_q, e_c/e_q)
 
 
-CRITERIA = re.compile(r"cell transit \(\|U\| \+ 2 c_mp\) deltaT/h largest (\S+) "
-                      r"\((\d+) cells above 1\); share of a cell's kinetic energy in "
-                      r"simulators crossing more than the cell largest (\S+) \((\d+) cells "
-                      r"above (\S+)\)")
-
-
 def criteria(log):
     """(largest transit, cells above 1, largest fast share, cells above
     its limit, the limit, warned) of the last logged line."""
     with open(log) as f:
         text = f.read()
-    transit, cells, share, share_cells, limit = CRITERIA.findall(text)[-1]
-    return (float(transit), int(cells), float(share), int(share_cells), float(limit),
-            "too long for the gas" in text)
+    _, _, transit, cells, share, share_cells, limit = foam.step_criteria(text)[-1]
+    return transit, int(cells), share, int(share_cells), limit, "too long for the gas" in text
 
 
 @pytest.mark.parametrize("dt", [4e-7, 2e-6])

@@ -53,6 +53,10 @@ far from their thresholds in every run of the ensemble; the majorant's
 bounds are computed at P_EACH).  Family-wise error: 2.5e-4
 (rmf_testing.MODULE_ALPHA) over m = 17 comparisons, Bonferroni.  The
 logged limit of the share is exact (quadrature).
+
+test_adjust_time_step (the step set from the gas's transit, adjustTimeStep)
+makes no statistical comparison: its figures are the solver's against our
+own sum over the same simulators, and bounds the solver must keep exactly.
 """
 
 import math
@@ -251,4 +255,136 @@ def test_majorant_excess():
           f"{bound_f:.3g}] and (1, {bound_1:.3g}] for {cf} and {c1} collisions); "
           f"majorant / 10: {n10:g} cell-steps, largest {p10:.4g}, warned {w10} (expected "
           f"the warning, largest above 8)")
+    assert ok
+
+
+# -- adjustTimeStep: the step from the gas's transit ---------------------------
+
+MASSES = (46.5e-27, 53.12e-27)      # typeId 0 (N2) and 1 (O2), dsmcProperties
+STEP_LINE = re.compile(r"deltaT = (\S+) s, largest cell transit (\S+) \(maxTransit (\S+)\)")
+WRITE_LINE = re.compile(r"Gas step since the last write \(adjustTimeStep\): deltaT from (\S+) to "
+                        r"(\S+) s, largest cell transit of a step (\S+) \(maxTransit (\S+)\)")
+#: The transit rate the solver finds from the fill against ours: the fill is
+#: written with 17 digits (round-trip exact), so only the order of the sums
+#: differs: a relative 1e-12 (about 1e4 roundings of 1e-16 each, at most)
+RATE_TOLERANCE = 1e-12
+
+
+def largest_transit_rate(case, time):
+    """Independent of the solver: the largest (|U| + 2 c_mp)/h over the cells
+    of the simulators written at time (per cell their mass-weighted mean
+    velocity U and 2 R T = 2/3 of their mean squared thermal speed), h the
+    mesh's 5 mm."""
+    import numpy as np
+    cloud = os.path.join(case, time, "lagrangian", "dsmc")
+    _, cells = foam.read_positions(os.path.join(cloud, "positions"), cells=True)
+    U = foam.read_list(os.path.join(cloud, "U"))
+    m = np.array(MASSES)[foam.read_list(os.path.join(cloud, "typeId")).astype(int)]
+    M = np.bincount(cells, m, N_CELLS)
+    MU = np.stack([np.bincount(cells, m*U[:, k], N_CELLS) for k in range(3)], 1)
+    MUU = np.bincount(cells, m*(U*U).sum(1), N_CELLS)
+    full = M > 0
+    mean = MU[full]/M[full, None]
+    two_rt = np.maximum(2*(MUU[full]/M[full] - (mean*mean).sum(1))/3, 0)
+    return ((np.sqrt((mean*mean).sum(1)) + 2*np.sqrt(two_rt))/H).max()
+
+
+def adjusted(name, end, write, s, restart_at=None, **controls):
+    """freeSpacePeriodic (seed s) at deltaT 5e-5 s (50 times its own: a
+    transit of 28) with adjustTimeStep and the given controls, run to end
+    with writes every write; with restart_at, stopped there first and run
+    on from it.  (case, [(deltaT, transit, maxTransit) of every step],
+    the step criteria's rows, the log's text)."""
+    case = tutorial(name, s)
+    control = "system/controlDict"
+    for key, value in dict(deltaT="5e-05", adjustTimeStep="yes", writeControl="adjustableRunTime",
+                           writeInterval=f"{write:g}", writePrecision=17,
+                           startFrom="latestTime", **controls).items():
+        foam.set_entry(case, control, key, value)
+    text = ""
+    for stop, log in ((restart_at, "log.first"), (end, "log.rarefiedMultiphaseFoam")):
+        if stop is None:
+            continue
+        foam.set_entry(case, control, "endTime", f"{stop:g}")
+        with open(foam.run(case, "rarefiedMultiphaseFoam", log=log)) as f:
+            text += f.read()
+    steps = [tuple(float(x) for x in m) for m in STEP_LINE.findall(text)]
+    return case, steps, foam.step_criteria(text), text
+
+
+def write_summaries(text):
+    """Per write: (shortest step, longest, largest transit) as the solver
+    logs them, and as its per-step lines give them."""
+    logged, found, since = [], [], []
+    for line in text.splitlines():
+        m = STEP_LINE.search(line)
+        if m:
+            since.append((float(m.group(1)), float(m.group(2))))
+        m = WRITE_LINE.search(line)
+        if m:
+            logged.append(tuple(float(x) for x in m.groups()[:3]))
+            found.append((min(d for d, _ in since), max(d for d, _ in since),
+                          max(t for _, t in since)))
+            since = []
+    return logged, found
+
+
+def test_adjust_time_step():
+    """adjustTimeStep (system/controlDict; rarefiedMultiphaseSystem): before
+    each step the solver sets deltaT so that the largest cell transit
+    (|U| + 2 c_mp) deltaT/h of the simulators then in each cell is
+    maxTransit, at most maxDeltaT, the steps to the next write of equal
+    length and none longer.  Case: freeSpacePeriodic at 50 times its step
+    (a transit of 28 if kept), maxTransit 0.5, to 5e-6 s, written every
+    2.5e-6 s.  Expected, none statistical:
+    - the first step's transit per second equal to largest_transit_rate of
+      the fill (our own sum in numpy) within RATE_TOLERANCE, its step
+      maxTransit over it (5e-6 s to the write is not a whole number of
+      such steps: shortened to the next whole number);
+    - every step's logged transit at most maxTransit (a relative 1e-9: the
+      steps to a write may exceed by the time's round-off), every step
+      at most maxDeltaT, the steps summing to the write times;
+    - at each write, the steps' summary (shortest, longest, largest
+      transit) that of the steps logged since the last write;
+    - the step criteria at each write: no cell above 1 in the transit or
+      in deltaT/tau, no cell above the fast share, no warning (at 5e-5 s
+      every cell breaks them, test_step_criteria);
+    - the run stopped at 2.5e-6 s and restarted takes the same steps after
+      it, each step and its transit to the logged digits, as the run that
+      went through: the step comes from the state alone;
+    - maxDeltaT 1e-7 (below the transit's step, about 9e-7 s): every step
+      1e-7 s (2.5e-6 s is 25 of them)."""
+    case, steps, rows, text = adjusted("adjust", 5e-6, 2.5e-6, seed(1), maxTransit=0.5)
+    rate_fill = largest_transit_rate(case, "0")
+    _, steps_r, _, _ = adjusted("adjustRestart", 5e-6, 2.5e-6, seed(1), restart_at=2.5e-6,
+                                maxTransit=0.5)
+    _, steps_cap, _, _ = adjusted("adjustCap", 2.5e-6, 2.5e-6, seed(1), maxTransit=0.5,
+                                  maxDeltaT="1e-07")
+
+    dt0, transit0, _ = steps[0]
+    rate0 = transit0/dt0
+    target0 = 0.5/rate_fill
+    expected0 = 2.5e-6/math.ceil(2.5e-6/target0)
+    ok_first = abs(rate0/rate_fill - 1) < RATE_TOLERANCE and abs(dt0/expected0 - 1) < 1e-9
+    ok_steps = (all(t <= 0.5*(1 + 1e-9) and d <= 5e-5 for d, t, _ in steps)
+                and abs(sum(d for d, _, _ in steps) - 5e-6) < 1e-18)
+    logged, found = write_summaries(text)
+    ok_rows = (len(rows) == 2 and len(logged) == 2 and logged == found and all(r[1] == 0 and r[3] == 0 and r[5] == 0 for r in rows)
+               and "is too long for the gas" not in text)
+    ok_restart = steps == steps_r
+    ok_cap = (len(steps_cap) == 25 and all(abs(d/1e-7 - 1) < 1e-9 for d, _, _ in steps_cap)
+              and all(t < 0.5 for _, t, _ in steps_cap))
+    ok = ok_first and ok_steps and ok_rows and ok_restart and ok_cap
+    print(f"\n{'PASS' if ok else 'FAIL'} adjustTimeStep: first step {dt0:.6g} s "
+          f"(expected {expected0:.6g}: maxTransit 0.5 over the fill's largest transit rate "
+          f"{rate_fill:.8g} /s from numpy, the solver's {rate0:.8g}, relative difference "
+          f"{abs(rate0/rate_fill - 1):.2g}, tolerance {RATE_TOLERANCE:g}); {len(steps)} steps "
+          f"from {min(d for d, _, _ in steps):.4g} to {max(d for d, _, _ in steps):.4g} s, "
+          f"largest transit {max(t for _, t, _ in steps):.6g} (at most 0.5), sum "
+          f"{sum(d for d, _, _ in steps):.6g} s (5e-6); step criteria at the writes: "
+          f"{[(r[2], r[3]) for r in rows]} (largest transit, cells above 1), summaries "
+          f"{logged} (from the steps {found}), warning "
+          f"{'is too long for the gas' in text}; restarted at 2.5e-6 s: steps and transits equal "
+          f"{ok_restart}; maxDeltaT 1e-7: {len(steps_cap)} steps (25), all 1e-7 s "
+          f"{ok_cap}")
     assert ok

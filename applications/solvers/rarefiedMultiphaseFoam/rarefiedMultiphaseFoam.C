@@ -16,7 +16,9 @@ Description
     dsmcFoam case runs unchanged, grains run alone in vacuum, or both
     together.  The grain cloud is constant/<cloud>Properties (-cloud,
     default grains).  After each step a progress line gives the simulated
-    time, the wall time used and an estimate of the wall time left.  A
+    time, the wall time used and an estimate of the wall time left.  With
+    adjustTimeStep (system/controlDict) each step's length follows the
+    gas's cell transit (rarefiedMultiphaseSystem).  A
     time directory whose write did not finish (a killed run, a full disk)
     is set aside at the restart (writeGuard; doc/physics.md#restart).  A
     parallel run logs its load balance at every write, and may write the
@@ -79,8 +81,12 @@ int main(int argc, char *argv[])
 
     Info<< "\nStarting time loop\n" << endl;
 
-    while (runTime.loop())
+    // With adjustTimeStep the step is set before the end time is tested
+    phases.adjustDeltaT(runTime);
+    while (runTime.run())
     {
+        ++runTime;
+
         writeGuard::begin(runTime);
         Info<< "Time = " << runTime.timeName() << nl << endl;
 
@@ -95,6 +101,8 @@ int main(int argc, char *argv[])
         {
             break;
         }
+
+        phases.adjustDeltaT(runTime);
     }
 
     Info<< "End\n" << endl;

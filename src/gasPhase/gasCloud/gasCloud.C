@@ -5,6 +5,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "gasCloud.H"
+#include "cellExtent.H"
 #include "gasCellAverage.H"
 #include "randomStreams.H"
 #include "restartState.H"
@@ -139,6 +140,7 @@ Foam::gasCloud::gasCloud(const word& cloudName, const fvMesh& mesh)
     remainder_(collisionSelectionRemainder()),
     rnd_(rndGen()),
     fields_(*this),
+    extents_(smallestCellExtents(mesh)),
     atCollisionsIndex_(-1)
 {
     if (cartesianTracking(particleProperties()))
@@ -204,6 +206,7 @@ Foam::gasCloud::gasCloud
     remainder_(collisionSelectionRemainder()),
     rnd_(rndGen()),
     fields_(*this),
+    extents_(smallestCellExtents(mesh)),
     atCollisionsIndex_(-1)
 {
     setWeighting();

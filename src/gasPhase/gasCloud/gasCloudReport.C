@@ -5,13 +5,38 @@
 
 Description
     gasCloud: the log: the step criteria and the NTC majorant excess at a
-    write time, and the cloud's figures.
+    write time, and the cloud's figures; the largest cell transit now
+    (for the solver's adjustTimeStep).
 
 \*---------------------------------------------------------------------------*/
 
 #include "gasCloud.H"
 #include "gasCellAverage.H"
-#include "cellExtent.H"
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+
+//- v from the processor whose local largest is the global largest (the
+//  others give -GREAT to the maximum)
+Foam::vector fromLargest
+(
+    const Foam::scalar local,
+    const Foam::scalar global,
+    const Foam::vector& v
+)
+{
+    Foam::vector out
+    (
+        local == global ? v : Foam::vector::uniform(-Foam::GREAT)
+    );
+    Foam::reduce(out, Foam::maxOp<Foam::vector>());
+    return out;
+}
+
+} // End anonymous namespace
+
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
@@ -20,7 +45,6 @@ void Foam::gasCloud::reportStepCriteria(const gasCellAverage& average) const
     using constant::mathematical::pi;
 
     const scalar dt = mesh().time().deltaTValue();
-    const scalarField extents(smallestCellExtents(mesh()));
     const bool weighted = axisymmetric_.weighted();
 
     scalar collisionMax = 0;
@@ -29,9 +53,11 @@ void Foam::gasCloud::reportStepCriteria(const gasCellAverage& average) const
     label collisionCells = 0;
     label transitCells = 0;
     label fastCells = 0;
+    label transitWorst = -1;
+    label fastWorst = -1;
     forAll(mesh().cells(), celli)
     {
-        const scalar h = extents[celli];
+        const scalar h = extents_[celli];
 
         // Share of the cell's kinetic energy carried by the simulators now
         // in it that cross more than the cell in a step: a fast beam
@@ -50,7 +76,11 @@ void Foam::gasCloud::reportStepCriteria(const gasCellAverage& average) const
             }
         }
         const scalar fastShare = all > 0 ? fast/all : 0;
-        fastMax = max(fastMax, fastShare);
+        if (fastShare > fastMax)
+        {
+            fastMax = fastShare;
+            fastWorst = celli;
+        }
         fastCells += (fastShare > fastShareLimit);
 
         const scalar lambda = average.lambda(celli);
@@ -67,13 +97,52 @@ void Foam::gasCloud::reportStepCriteria(const gasCellAverage& average) const
             (mag(average.U(celli)) + 2*std::sqrt(2*R*T))*dt/h;
 
         collisionMax = max(collisionMax, collision);
-        transitMax = max(transitMax, transit);
+        if (transit > transitMax)
+        {
+            transitMax = transit;
+            transitWorst = celli;
+        }
         collisionCells += (collision > 1);
         transitCells += (transit > 1);
     }
-    reduce(collisionMax, maxOp<scalar>());
+    // Where the largest transit and share are, and their cells' state
+    const vectorField& C = mesh().cellCentres();
+    const scalar localTransitMax = transitMax;
+    const scalar localFastMax = fastMax;
     reduce(transitMax, maxOp<scalar>());
     reduce(fastMax, maxOp<scalar>());
+    const label t = transitWorst;
+    const label f = fastWorst;
+    const vector transitAt
+    (
+        fromLargest(localTransitMax, transitMax, t < 0 ? Zero : C[t])
+    );
+    const vector transitState
+    (
+        fromLargest
+        (
+            localTransitMax, transitMax,
+            t < 0
+          ? Zero
+          : vector(mag(average.U(t)), average.T(t), extents_[t])
+        )
+    );
+    const vector fastAt
+    (
+        fromLargest(localFastMax, fastMax, f < 0 ? Zero : C[f])
+    );
+    const vector fastState
+    (
+        fromLargest
+        (
+            localFastMax, fastMax,
+            f < 0
+          ? Zero
+          : vector(cellOccupancy()[f].size(), extents_[f], 0)
+        )
+    );
+
+    reduce(collisionMax, maxOp<scalar>());
     reduce(collisionCells, sumOp<label>());
     reduce(transitCells, sumOp<label>());
     reduce(fastCells, sumOp<label>());
@@ -81,10 +150,23 @@ void Foam::gasCloud::reportStepCriteria(const gasCellAverage& average) const
     Info<< "Gas step criteria since the last write: deltaT/(mean collision"
         << " time) largest " << collisionMax << " (" << collisionCells
         << " cells above 1), cell transit (|U| + 2 c_mp) deltaT/h largest "
-        << transitMax << " (" << transitCells << " cells above 1);"
-        << " share of a cell's kinetic energy in simulators crossing more"
+        << transitMax << " (" << transitCells << " cells above 1";
+    if (transitMax > 0)
+    {
+        Info<< ", the largest at " << transitAt << " m: |U| "
+            << transitState.x() << " m/s, T " << transitState.y()
+            << " K, h " << transitState.z() << " m";
+    }
+    Info<< "); share of a cell's kinetic energy in simulators crossing more"
         << " than the cell largest " << fastMax << " (" << fastCells
-        << " cells above " << fastShareLimit << ")" << endl;
+        << " cells above " << fastShareLimit;
+    if (fastMax > 0)
+    {
+        Info<< ", the largest at " << fastAt << " m: "
+            << label(fastState.x()) << " simulators, h " << fastState.y()
+            << " m";
+    }
+    Info<< ")" << endl;
 
     if (collisionCells || transitCells || fastCells)
     {
@@ -100,6 +182,41 @@ void Foam::gasCloud::reportStepCriteria(const gasCellAverage& average) const
             << " deltaT in system/controlDict, or refine the mesh only"
             << " where the transit fails" << endl;
     }
+}
+
+
+Foam::scalar Foam::gasCloud::largestTransitRate() const
+{
+    // Each cell's simulators as the last step left them (the occupancy is
+    // built after the move, and nothing moves after it; at a restart, by
+    // the constructor): their mass, momentum and twice their kinetic
+    // energy
+    scalar largest = 0;
+    forAll(cellOccupancy(), celli)
+    {
+        scalar m = 0;
+        vector mc(Zero);
+        scalar mcc = 0;
+        for (const gasParcel* p : cellOccupancy()[celli])
+        {
+            const scalar mass = constProps(p->typeId()).mass();
+            m += mass;
+            mc += mass*p->U();
+            mcc += mass*magSqr(p->U());
+        }
+        if (m > 0)
+        {
+            const vector U(mc/m);
+
+            // 2 R T = 2 p/rho = 2/3 of the mean squared thermal speed
+            const scalar twoRT = max(2*(mcc/m - magSqr(U))/3, scalar(0));
+
+            largest =
+                max(largest, (mag(U) + 2*std::sqrt(twoRT))/extents_[celli]);
+        }
+    }
+
+    return returnReduce(largest, maxOp<scalar>());
 }
 
 

@@ -59,6 +59,35 @@ void Foam::rarefiedMultiphaseSystem::checkPhases
 }
 
 
+void Foam::rarefiedMultiphaseSystem::readStepControls(const Time& runTime)
+{
+    const dictionary& controls = runTime.controlDict();
+
+    // Upstream's keyword: Time has read it, and stopped on a bad value
+    adjustTimeStep_ = controls.getOrDefault<bool>("adjustTimeStep", false);
+    maxTransit_ =
+        inputChecks::getIntervalOrDefault
+        (
+            controls, "maxTransit", inputChecks::interval::above(0, 1), 1
+        );
+    maxDeltaT_ =
+        inputChecks::getPositiveOrDefault
+        (
+            controls, "maxDeltaT", controls.get<scalar>("deltaT")
+        );
+
+    if (adjustTimeStep_ && !gas_.valid())
+    {
+        inputChecks::badValue
+        (
+            controls, "adjustTimeStep", "yes",
+            "no (the step follows the gas's cell transit, and there is no"
+            " constant/dsmcProperties)"
+        );
+    }
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::rarefiedMultiphaseSystem::rarefiedMultiphaseSystem
@@ -67,7 +96,14 @@ Foam::rarefiedMultiphaseSystem::rarefiedMultiphaseSystem
     const word& cloudName
 )
 :
-    balance_(mesh)
+    balance_(mesh),
+    adjustTimeStep_(false),
+    maxTransit_(1),
+    maxDeltaT_(0),
+    transit_(0),
+    shortest_(GREAT),
+    longest_(0),
+    transitMax_(0)
 {
     if (present(mesh, "dsmcProperties"))
     {
@@ -115,13 +151,70 @@ Foam::rarefiedMultiphaseSystem::rarefiedMultiphaseSystem
     }
 
     checkPhases(mesh, cloudName);
+    readStepControls(mesh.time());
 }
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+void Foam::rarefiedMultiphaseSystem::adjustDeltaT(Time& runTime) const
+{
+    if (!adjustTimeStep_)
+    {
+        return;
+    }
+
+    // From the state alone (no growth limit from the last step): a restart
+    // finds the same step (but for round-off in the time's sum)
+    const scalar rate = gas_->largestTransitRate();
+    scalar dt = rate*maxDeltaT_ > maxTransit_ ? maxTransit_/rate : maxDeltaT_;
+
+    // Steps of equal length to the next write time: as many as needed for
+    // none to be longer (Time's own spreading may lengthen them by half),
+    // but for the time's round-off (a relative 1e-9)
+    const dictionary& controls = runTime.controlDict();
+    if
+    (
+        controls.getOrDefault<word>("writeControl", "timeStep")
+     == "adjustableRunTime"
+    )
+    {
+        const scalar interval = controls.get<scalar>("writeInterval");
+        const scalar sinceStart =
+            runTime.value() - runTime.startTime().value();
+        const label written = label(sinceStart/interval + 1e-6);
+        const scalar toWrite = (written + 1)*interval - sinceStart;
+        dt = toWrite/(label(toWrite/dt*(1 - 1e-9)) + 1);
+    }
+    runTime.setDeltaT(dt, false);
+    transit_ = rate*dt;
+}
+
+
 void Foam::rarefiedMultiphaseSystem::evolve()
 {
+    if (adjustTimeStep_)
+    {
+        const Time& runTime = gas_->mesh().time();
+        const scalar dt = runTime.deltaTValue();
+        Info<< "deltaT = " << dt << " s, largest cell transit " << transit_
+            << " (maxTransit " << maxTransit_ << ")" << endl;
+
+        shortest_ = min(shortest_, dt);
+        longest_ = max(longest_, dt);
+        transitMax_ = max(transitMax_, transit_);
+        if (runTime.writeTime())
+        {
+            Info<< "Gas step since the last write (adjustTimeStep): deltaT"
+                << " from " << shortest_ << " to " << longest_ << " s,"
+                << " largest cell transit of a step " << transitMax_
+                << " (maxTransit " << maxTransit_ << ")" << endl;
+            shortest_ = GREAT;
+            longest_ = 0;
+            transitMax_ = 0;
+        }
+    }
+
     // Steps 1-3: gas inflow, move, collisions
     if (gas_.valid())
     {

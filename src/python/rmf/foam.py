@@ -414,9 +414,10 @@ def log_values(log, label):
 _STEP_CRITERIA = re.compile(
     r"Gas step criteria since the last write: deltaT/\(mean collision time\) "
     r"largest (\S+) \((\d+) cells above 1\), cell transit \(\|U\| \+ 2 c_mp\) "
-    r"deltaT/h largest (\S+) \((\d+) cells above 1\); share of a cell's kinetic "
-    r"energy in simulators crossing more than the cell largest (\S+) \((\d+) cells "
-    r"above (\S+)\)")
+    r"deltaT/h largest (\S+) \((\d+) cells above 1(?:, the largest at [^;]*)?\); "
+    r"share of a cell's kinetic energy in simulators crossing more than the "
+    r"cell largest (\S+) \((\d+) cells "
+    r"above ([0-9.eE+-]+)(?:, the largest at [^;]*)?\)")
 
 
 def step_criteria(text):

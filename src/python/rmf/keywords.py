@@ -74,6 +74,7 @@ TABLES = {
         (r"constant/dsmcProperties",
          r"nEquivalentParticles|randomSeed|tracking"),
         (r"system/dsmcInitialiseDict(\..*)?", r".*"),
+        (r"system/controlDict", r"maxTransit|maxDeltaT"),
     ],
     "axisymmetric": [
         (r"constant/(dsmcProperties|grainsProperties)",
