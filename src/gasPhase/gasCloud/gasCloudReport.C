@@ -12,6 +12,7 @@ Description
 
 #include "gasCloud.H"
 #include "gasCellAverage.H"
+#include "Pair.H"
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
@@ -105,40 +106,38 @@ void Foam::gasCloud::reportStepCriteria(const gasCellAverage& average) const
         collisionCells += (collision > 1);
         transitCells += (transit > 1);
     }
-    // Where the largest transit and share are, and their cells' state
+
+    // Where the largest transit and share are, and a state of their cells:
+    // the global largest, with the centre and state from its processor
     const vectorField& C = mesh().cellCentres();
-    const scalar localTransitMax = transitMax;
-    const scalar localFastMax = fastMax;
-    reduce(transitMax, maxOp<scalar>());
-    reduce(fastMax, maxOp<scalar>());
+    auto largestAt = [&](scalar& largest, const label celli, const vector& v)
+    {
+        const scalar local = largest;
+        reduce(largest, maxOp<scalar>());
+        return Pair<vector>
+        (
+            fromLargest(local, largest, celli < 0 ? Zero : C[celli]),
+            fromLargest(local, largest, v)
+        );
+    };
     const label t = transitWorst;
     const label f = fastWorst;
-    const vector transitAt
+    const Pair<vector> transitAt
     (
-        fromLargest(localTransitMax, transitMax, t < 0 ? Zero : C[t])
-    );
-    const vector transitState
-    (
-        fromLargest
+        largestAt
         (
-            localTransitMax, transitMax,
+            transitMax, t,
             t < 0
           ? Zero
           : vector(mag(average.U(t)), average.T(t), extents_[t])
         )
     );
-    const vector fastAt
+    const Pair<vector> fastAt
     (
-        fromLargest(localFastMax, fastMax, f < 0 ? Zero : C[f])
-    );
-    const vector fastState
-    (
-        fromLargest
+        largestAt
         (
-            localFastMax, fastMax,
-            f < 0
-          ? Zero
-          : vector(cellOccupancy()[f].size(), extents_[f], 0)
+            fastMax, f,
+            f < 0 ? Zero : vector(cellOccupancy()[f].size(), extents_[f], 0)
         )
     );
 
@@ -153,18 +152,19 @@ void Foam::gasCloud::reportStepCriteria(const gasCellAverage& average) const
         << transitMax << " (" << transitCells << " cells above 1";
     if (transitMax > 0)
     {
-        Info<< ", the largest at " << transitAt << " m: |U| "
-            << transitState.x() << " m/s, T " << transitState.y()
-            << " K, h " << transitState.z() << " m";
+        Info<< ", the largest at " << transitAt.first() << " m: |U| "
+            << transitAt.second().x() << " m/s, T "
+            << transitAt.second().y() << " K, h "
+            << transitAt.second().z() << " m";
     }
     Info<< "); share of a cell's kinetic energy in simulators crossing more"
         << " than the cell largest " << fastMax << " (" << fastCells
         << " cells above " << fastShareLimit;
     if (fastMax > 0)
     {
-        Info<< ", the largest at " << fastAt << " m: "
-            << label(fastState.x()) << " simulators, h " << fastState.y()
-            << " m";
+        Info<< ", the largest at " << fastAt.first() << " m: "
+            << label(fastAt.second().x()) << " simulators, h "
+            << fastAt.second().y() << " m";
     }
     Info<< ")" << endl;
 
