@@ -157,7 +157,7 @@ Foam::rarefiedMultiphaseSystem::rarefiedMultiphaseSystem
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::rarefiedMultiphaseSystem::adjustDeltaT(Time& runTime) const
+void Foam::rarefiedMultiphaseSystem::adjustDeltaT(Time& runTime)
 {
     if (!adjustTimeStep_)
     {
